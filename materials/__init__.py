@@ -1,0 +1,21 @@
+"""Equations of state, wave curves and the Riemann solver.
+
+A material's wave curves answer "which states can one wave reach from here";
+``solve_contact`` and ``solve_boundary`` intersect them.  Nothing here knows
+about fronts or events.
+"""
+
+from .base import Material
+from .errors import MaterialError, NoSolutionError, StateOutOfRangeError
+from .ideal_gas import IdealGas
+from .linear_elastic import LinearElastic
+from .mie_gruneisen import MieGruneisen
+from .riemann import RiemannSolution, solve_boundary, solve_contact
+from .state import LEFT, RIGHT, State
+from .waves import Fan, Shock
+
+__all__ = [
+    "LEFT", "RIGHT", "Fan", "IdealGas", "LinearElastic", "Material", "MaterialError",
+    "MieGruneisen", "NoSolutionError", "RiemannSolution", "Shock", "State",
+    "StateOutOfRangeError", "solve_boundary", "solve_contact",
+]

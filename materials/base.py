@@ -1,0 +1,285 @@
+"""The equation-of-state interface every material implements.
+
+A material answers thermodynamic questions about uniform states: the stress
+``sigma(v, e)``, the Lagrangian sound speed ``C_L``, the Hugoniot centred on any
+state, and the isentrope through any state with its Riemann-invariant integral.
+Wave curves (``materials.wavecurves``) are built from these answers and the
+Riemann solver only ever talks to wave curves.
+
+Most solid and gas models in the book have a stress that is *affine in energy*,
+
+    sigma(v, e) = A(v) + B(v) e,        B = (d sigma / d e)_v = Gamma / v,
+
+(Mie–Grüneisen: ``B = rho0 Gamma0``; ideal gas: ``B = (gamma - 1)/v``; a linear
+elastic solid: ``B = 0``).  For such a material the Rankine–Hugoniot energy
+equation centred on a state ``a``,
+
+    e - e_a = 1/2 (sigma_a + sigma(v, e)) (v_a - v),
+
+is linear in ``e`` and solves in closed form:
+
+    e_H(v) = [e_a + 1/2 (sigma_a + A(v)) (v_a - v)] / [1 - 1/2 B(v) (v_a - v)].
+
+Along an isentrope ``de/dv = -sigma(v, e)``, so ``(d sigma/dv)_s = A' + B' e - B sigma``
+and ``C_L^2 = -v0^2 (d sigma/dv)_s``.  ``AffineEnergyMaterial`` implements all of
+this from the three functions ``A``, ``A'`` and ``B`` (with ``B'``).
+"""
+
+from __future__ import annotations
+
+import functools
+import math
+from abc import ABC, abstractmethod
+
+import numpy as np
+
+from .errors import MaterialError, StateOutOfRangeError
+from .quadrature import UNIT_NODES, UNIT_WEIGHTS, panel_edges
+from .state import State
+
+ROOM_TEMPERATURE = 298.15
+"""Temperature (K) of the unstressed reference state."""
+
+
+def require_positive(name: str, value: float, what: str) -> float:
+    """Return ``value`` as a float if it is finite and > 0, else raise ``MaterialError``."""
+    try:
+        number = float(value)
+    except (TypeError, ValueError) as exc:
+        raise MaterialError(f"{what}: {name} must be a number, got {value!r}") from exc
+    if not math.isfinite(number) or number <= 0.0:
+        raise MaterialError(f"{what}: {name} must be finite and > 0, got {value!r}")
+    return number
+
+
+class Material(ABC):
+    """A material's equation of state and the wave curves it induces.
+
+    Attributes: ``name``; ``rho0`` reference density (kg/m^3); ``spall_strength``
+    the tension (Pa, positive number) at which it fractures, ``math.inf`` if it
+    never does.
+    """
+
+    name: str
+    rho0: float
+    spall_strength: float = math.inf
+
+    @property
+    def v0(self) -> float:
+        """Reference specific volume (m^3/kg)."""
+        return 1.0 / self.rho0
+
+    # --- equation of state -------------------------------------------------
+    @abstractmethod
+    def stress(self, v: float, e: float) -> float:
+        """Longitudinal stress (Pa, compression positive) at volume ``v`` and energy ``e``."""
+
+    @abstractmethod
+    def sound_speed(self, v: float, e: float) -> float:
+        """Lagrangian isentropic sound speed ``C_L = v0 sqrt(-(d sigma/dv)_s)`` (m/s)."""
+
+    @abstractmethod
+    def volume_range(self) -> tuple[float, float]:
+        """Open interval of specific volume in which the model is valid."""
+
+    def temperature(self, v: float, e: float) -> float | None:
+        """Temperature (K), or ``None`` when the model has no specific heat."""
+        return None
+
+    def reference_state(self, u: float = 0.0) -> State:
+        """The unstressed reference state (``v = v0``, ``e = 0``) moving at ``u``."""
+        return State(sigma=self.stress(self.v0, 0.0), u=u, v=self.v0, e=0.0)
+
+    def state(self, v: float, e: float, u: float = 0.0) -> State:
+        """The state at ``(v, e)`` moving at ``u``, checked against the model's range."""
+        self.check_volume(v)
+        return State(sigma=self.stress(v, e), u=u, v=v, e=e)
+
+    def check_volume(self, v: float) -> None:
+        """Raise ``StateOutOfRangeError`` if ``v`` is outside the model's range."""
+        v_min, v_max = self.volume_range()
+        if not v_min < v < v_max:
+            raise StateOutOfRangeError(
+                f"{self.name}: density {1.0 / v:.6g} kg/m3 is outside the range of its "
+                f"equation of state ({1.0 / v_max:.6g} to {1.0 / v_min:.6g} kg/m3)"
+            )
+
+    # --- Hugoniot and isentrope ---------------------------------------------
+    @abstractmethod
+    def hugoniot(self, ahead: State, v: float) -> tuple[float, float, float]:
+        """Point of the Hugoniot centred on ``ahead`` at volume ``v``: ``(sigma, e, dsigma/dv)``."""
+
+    @abstractmethod
+    def hugoniot_volume_limit(self, ahead: State) -> float:
+        """Smallest volume the Hugoniot centred on ``ahead`` reaches inside the model's range."""
+
+    @abstractmethod
+    def isentrope(self, through: State, v: float) -> tuple[float, float]:
+        """``(sigma, e)`` on the isentrope through ``through`` at volume ``v``."""
+
+    @abstractmethod
+    def riemann_integral(self, through: State, v: float) -> float:
+        """``J = integral from through.v to v of rho0 C_L dv'`` along the isentrope (kg/(m^2 s) m^3/kg).
+
+        This is the Riemann-invariant integral: along a right-going simple wave
+        ``u - u_through = -J`` (and ``+J`` for a left-going one), because
+        ``d sigma / (rho0 C_L) = -rho0 C_L dv``.
+        """
+
+    def wave_curve(self, ahead: State, direction: int, release: str = "isentrope"):
+        """States one wave of the given direction can reach from ``ahead``.
+
+        ``release`` chooses the unloading path: ``"isentrope"`` (physical, a
+        centred fan) or ``"hugoniot"`` (a rarefaction shock on the Hugoniot
+        centred on ``ahead``, the impedance-match shortcut).
+        """
+        from .wavecurves import HydrodynamicWaveCurve
+
+        return HydrodynamicWaveCurve(self, ahead, direction, release)
+
+    def __repr__(self) -> str:
+        return f"{type(self).__name__}({self.name!r})"
+
+
+class AffineEnergyMaterial(Material):
+    """A material whose stress is affine in energy: ``sigma = A(v) + B(v) e``.
+
+    Subclasses provide ``_a(v)``, ``_a_prime(v)``, ``_b(v)`` and ``_b_prime(v)``
+    (each accepting floats and numpy arrays) and ``volume_range``.  The Hugoniot
+    is the closed form of the module docstring for any ``B(v)``.
+
+    The isentrope implemented here assumes a constant ``B`` (Mie–Grüneisen with
+    ``Gamma/v`` constant; subclasses with another ``B`` override it).  Then
+    ``d/dv [e E(v)] = -A(v) E(v)`` with ``E(v) = exp(B (v - v0))``, so every
+    isentrope is labelled by the constant
+
+        K = e E(v) + F(v),    F(v) = int_{v0}^{v} A(w) E(w) dw,
+
+    and ``e(v) = (K - F(v)) / E(v)`` in closed form once the material function
+    ``F`` is known.  ``F`` is tabulated at panel edges when first needed and
+    completed inside a panel by a 20-point Gauss–Legendre rule, which is exact to
+    rounding for the analytic ``A``.  The Riemann-invariant integral
+    ``J = int rho0 C_L dv`` is one more Gauss–Legendre quadrature on panels.
+    """
+
+    _PANEL_FRACTION = 0.05
+    """Width of the quadrature panels, as a fraction of ``v0``.  The integrands'
+    nearest singularities (the ``1/s`` pole, the spinodal) lie at least ~0.4 v0
+    away, so 20-point Gauss–Legendre on such panels is exact to rounding."""
+
+    @abstractmethod
+    def _a(self, v):
+        """Cold-curve-like part ``A(v)`` of the stress (Pa)."""
+
+    @abstractmethod
+    def _a_prime(self, v):
+        """``dA/dv`` (Pa kg/m^3)."""
+
+    @abstractmethod
+    def _b(self, v):
+        """``B(v) = (d sigma/d e)_v`` (kg/m^3)."""
+
+    @abstractmethod
+    def _b_prime(self, v):
+        """``dB/dv``."""
+
+    def stress(self, v: float, e: float) -> float:
+        return float(self._a(v) + self._b(v) * e)
+
+    def sound_speed(self, v: float, e: float) -> float:
+        c2 = self.sound_speed_squared(v, e)
+        if not c2 > 0.0:
+            raise StateOutOfRangeError(
+                f"{self.name}: no real sound speed at density {1.0 / v:.6g} kg/m3 "
+                f"(the state is beyond the material's spinodal)"
+            )
+        return math.sqrt(c2)
+
+    def sound_speed_squared(self, v, e):
+        """``C_L^2 = v0^2 (B sigma - A' - B' e)`` (m^2/s^2); negative beyond the spinodal."""
+        sigma = self._a(v) + self._b(v) * e
+        slope = self._a_prime(v) + self._b_prime(v) * e - self._b(v) * sigma
+        return -self.v0 * self.v0 * slope
+
+    # --- Hugoniot -----------------------------------------------------------
+    def hugoniot(self, ahead: State, v: float) -> tuple[float, float, float]:
+        dv = ahead.v - v
+        a, a1 = float(self._a(v)), float(self._a_prime(v))
+        b, b1 = float(self._b(v)), float(self._b_prime(v))
+        num = ahead.e + 0.5 * (ahead.sigma + a) * dv
+        den = 1.0 - 0.5 * b * dv
+        e = num / den
+        dnum = 0.5 * a1 * dv - 0.5 * (ahead.sigma + a)
+        dden = -0.5 * b1 * dv + 0.5 * b
+        de = (dnum * den - num * dden) / (den * den)
+        sigma = a + b * e
+        return sigma, e, a1 + b1 * e + b * de
+
+    def hugoniot_volume_limit(self, ahead: State) -> float:
+        return self.volume_range()[0]
+
+    # --- isentrope (constant B) -----------------------------------------------
+    def _energy_factor(self, v):
+        return np.exp(float(self._b(self.v0)) * (np.asarray(v, dtype=float) - self.v0))
+
+    def _f_table(self) -> tuple[np.ndarray, np.ndarray]:
+        table = self.__dict__.get("_f_table_cache")
+        if table is None:
+            v_min, v_max = self.volume_range()
+            h = self._PANEL_FRACTION * self.v0
+            below = np.arange(self.v0, v_min - h, -h)
+            above = np.arange(self.v0, v_max + h, h)
+            edges = np.concatenate([below[::-1], above[1:]])
+            starts, ends = edges[:-1], edges[1:]
+            pieces = self._f_pieces(starts, ends)
+            cumulative = np.concatenate([[0.0], np.cumsum(pieces)])
+            origin = len(below) - 1
+            table = (edges, cumulative - cumulative[origin])
+            self.__dict__["_f_table_cache"] = table
+        return table
+
+    def _f_pieces(self, starts, ends):
+        """``int_{start}^{end} A E dw`` for arrays of panel ends (Gauss–Legendre)."""
+        starts = np.asarray(starts, dtype=float)
+        width = np.asarray(ends, dtype=float) - starts
+        nodes = starts[..., None] + width[..., None] * UNIT_NODES
+        return width * ((self._a(nodes) * self._energy_factor(nodes)) @ UNIT_WEIGHTS)
+
+    def _f(self, v):
+        """The material function ``F(v) = int_{v0}^{v} A(w) E(w) dw`` (floats or arrays)."""
+        edges, values = self._f_table()
+        v = np.asarray(v, dtype=float)
+        index = np.clip(np.searchsorted(edges, v) - 1, 0, len(edges) - 2)
+        return values[index] + self._f_pieces(edges[index], v)
+
+    def _isentrope_label(self, through: State) -> float:
+        return self._label_cache(through.v, through.e)
+
+    @functools.cached_property
+    def _label_cache(self):
+        @functools.lru_cache(maxsize=1024)
+        def label(v, e):
+            return float(e * self._energy_factor(v) + self._f(v))
+
+        return label
+
+    def isentrope(self, through: State, v: float) -> tuple[float, float]:
+        label = self._isentrope_label(through)
+        e = float((label - self._f(v)) / self._energy_factor(v))
+        return float(self._a(v) + self._b(v) * e), e
+
+    def riemann_integral(self, through: State, v: float) -> float:
+        label = self._isentrope_label(through)
+        total = 0.0
+        edges = panel_edges(through.v, v, self._PANEL_FRACTION * self.v0)
+        for start, end in zip(edges[:-1], edges[1:], strict=True):
+            nodes = start + (end - start) * UNIT_NODES
+            e_nodes = (label - self._f(nodes)) / self._energy_factor(nodes)
+            c2 = self.sound_speed_squared(nodes, e_nodes)
+            if not np.all(c2 > 0.0):
+                raise StateOutOfRangeError(
+                    f"{self.name}: the isentrope leaves the region of real sound speed near "
+                    f"density {1.0 / end:.6g} kg/m3"
+                )
+            total += (end - start) * float(np.sqrt(c2) @ UNIT_WEIGHTS)
+        return self.rho0 * total

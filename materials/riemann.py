@@ -1,0 +1,222 @@
+"""One Riemann solver for every interaction the engine meets.
+
+Two uniform states meet at a point: ``L`` (left material) and ``R`` (right
+material).  A left-going wave runs into ``L`` and a right-going wave into ``R``;
+the states behind them meet at a contact with equal stress and particle
+velocity (impedance matching).  With the wave curves of ``materials.wavecurves``,
+``u = u_L - g_L(sigma)`` on the left and ``u = u_R + g_R(sigma)`` on the right, so
+the contact stress is the root of the increasing function
+
+    phi(sigma) = g_L(sigma) + g_R(sigma) + u_R - u_L,
+
+found by a bracketed, safeguarded Newton iteration inside both materials'
+ranges of validity.  The same solver serves impact, collision, overtaking
+(the overtaken and overtaking waves are replaced by the states they bound),
+transmission and reflection at interfaces, and reflection at boundaries
+(``solve_boundary``: one wave curve against a prescribed stress or velocity).
+
+Contacts that cannot carry tension: if the root lies below ``-tensile_strength``
+(0 for an unbonded interface or a gas, the spall strength inside a solid), the
+contact separates into two free surfaces; each side then unloads to
+``sigma = 0`` on its own and a gap opens because ``u_R > u_L``.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from .errors import NoSolutionError, StateOutOfRangeError
+from .roots import bracketed_newton
+from .state import LEFT, RIGHT, State
+
+
+@dataclass(frozen=True, slots=True)
+class RiemannSolution:
+    """Outcome of a Riemann problem.
+
+    ``left_waves``: left-going waves, leading (leftmost) first; ``right_waves``:
+    right-going waves, leading (rightmost) first.  ``left_star``/``right_star``:
+    the states on the two sides of the contact (``None`` on a boundary's outer
+    side).  ``separated``: the contact opened.  ``bonded_sigma``: the contact
+    stress the problem would have had without separation (Pa); below
+    ``-tensile_strength`` when ``separated``.
+    """
+
+    left_waves: tuple
+    right_waves: tuple
+    left_star: State | None
+    right_star: State | None
+    separated: bool = False
+    bonded_sigma: float = math.nan
+
+    def fronts_in_order(self) -> list:
+        """All waves in their order along X just after the interaction."""
+        return [*self.left_waves, *reversed(self.right_waves)]
+
+
+def _acoustic_guess(z_left, z_right, left: State, right: State) -> float:
+    return (z_right * left.sigma + z_left * right.sigma
+            + z_left * z_right * (left.u - right.u)) / (z_left + z_right)
+
+
+def solve_contact(left_material, left: State, right_material, right: State,
+                  tensile_strength: float = math.inf, release: str = "isentrope",
+                  ) -> RiemannSolution:
+    """Contact state and outgoing waves when ``left`` meets ``right``.
+
+    ``tensile_strength`` (Pa, >= 0) is the largest tension the contact carries:
+    ``inf`` for a bonded interface that never fails, 0 for an unbonded one,
+    the spall strength inside a material.
+    """
+    curve_l = left_material.wave_curve(left, LEFT, release)
+    curve_r = right_material.wave_curve(right, RIGHT, release)
+    du = right.u - left.u
+
+    def phi(sigma):
+        g_l, dg_l = curve_l.velocity_change(sigma)
+        g_r, dg_r = curve_r.velocity_change(sigma)
+        return g_l + g_r + du, dg_l + dg_r
+
+    guess = _acoustic_guess(curve_l.impedance, curve_r.impedance, left, right)
+    floor = -tensile_strength
+    hi, phi_hi = _upper_bracket(phi, curve_l, curve_r, left, right, guess)
+    if phi_hi < 0.0:
+        raise NoSolutionError(
+            f"impact of {left_material.name} on {right_material.name} needs a stress above "
+            f"{hi / 1e9:.6g} GPa, beyond the range of validity of their equations of state "
+            f"(closing velocity {-du:.6g} m/s)"
+        )
+    lo, phi_lo = _lower_bracket(phi, curve_l, curve_r, min(left.sigma, right.sigma, guess),
+                                hi, floor)
+    if phi_lo > 0.0:
+        if lo == floor:
+            return _separate(curve_l, curve_r, _bonded_estimate(phi, curve_l, curve_r, floor))
+        if lo >= 0.0:
+            return _separate(curve_l, curve_r, lo)  # a gas cannot pull: vacuum forms
+        raise NoSolutionError(
+            f"the contact between {left_material.name} and {right_material.name} would need "
+            f"a tension beyond {-lo / 1e9:.6g} GPa, outside their equations of state; give "
+            f"the materials a spall strength or make the interface unbonded"
+        )
+    sigma = bracketed_newton(phi, lo, hi, guess, f_lo=phi_lo, f_hi=phi_hi)
+    return RiemannSolution(
+        left_waves=curve_l.waves(sigma),
+        right_waves=curve_r.waves(sigma),
+        left_star=curve_l.state_at(sigma),
+        right_star=curve_r.state_at(sigma),
+        bonded_sigma=sigma,
+    )
+
+
+def _upper_bracket(phi, curve_l, curve_r, left, right, guess):
+    """A stress with ``phi >= 0``, or the curves' common maximum if there is none."""
+    top = max(left.sigma, right.sigma, guess)
+    width = max(top - min(left.sigma, right.sigma, guess), 1e-9 * abs(top), 1.0)
+    limit = None
+    trial = top + 0.25 * width
+    while True:
+        if limit is not None and trial >= limit:
+            return limit, phi(limit)[0]
+        try:
+            value = phi(trial)[0]
+        except (NoSolutionError, StateOutOfRangeError):
+            limit = min(curve_l.sigma_max(), curve_r.sigma_max())
+            trial = limit
+            continue
+        if value >= 0.0:
+            return trial, value
+        width *= 2.0
+        trial = top + width
+
+
+def _lower_bracket(phi, curve_l, curve_r, bottom, hi, floor):
+    """A stress with ``phi <= 0`` not below ``floor``; else the lowest admissible stress."""
+    width = max(hi - bottom, 1e-9 * abs(bottom), 1.0)
+    trial = max(bottom, floor)
+    limit = None
+    while True:
+        try:
+            value = phi(trial)[0]
+        except (NoSolutionError, StateOutOfRangeError):
+            if limit is not None:
+                raise
+            limit = max(curve_l.sigma_min(), curve_r.sigma_min(), floor)
+            trial = limit
+            continue
+        if value <= 0.0 or trial == floor or trial == limit:
+            return trial, value
+        width *= 2.0
+        trial = max(bottom - width, floor)
+        if limit is not None:
+            trial = max(trial, limit)
+
+
+def _bonded_estimate(phi, curve_l, curve_r, floor) -> float:
+    """Contact stress the bonded problem would reach below a failed ``floor`` (for reports).
+
+    Returns the root if it lies inside both materials' ranges, else the lowest
+    admissible stress (the tension is at least that).
+    """
+    lowest = max(curve_l.sigma_min(), curve_r.sigma_min())
+    if lowest >= floor:
+        return lowest
+    try:
+        return bracketed_newton(phi, lowest, floor, rel_tol=1e-10)
+    except (NoSolutionError, StateOutOfRangeError):
+        return lowest
+
+
+def _separate(curve_l, curve_r, bonded_sigma: float):
+    """Both sides unload to a free surface; a gap opens between them."""
+    return RiemannSolution(
+        left_waves=curve_l.waves(0.0),
+        right_waves=curve_r.waves(0.0),
+        left_star=curve_l.state_at(0.0),
+        right_star=curve_r.state_at(0.0),
+        separated=True,
+        bonded_sigma=bonded_sigma,
+    )
+
+
+def solve_boundary(material, state: State, boundary_at: str, *, stress: float | None = None,
+                   velocity: float | None = None, release: str = "isentrope",
+                   ) -> RiemannSolution:
+    """Reflection at a boundary of prescribed ``stress`` (Pa) or ``velocity`` (m/s).
+
+    ``boundary_at`` is ``"right"`` when the boundary is the right end of the
+    material (the reflected wave goes left) and ``"left"`` otherwise.  A free
+    surface is ``stress=0``; an immovable wall is ``velocity=0``.
+    """
+    if (stress is None) == (velocity is None):
+        raise ValueError("give exactly one of stress or velocity")
+    if boundary_at not in ("left", "right"):
+        raise ValueError(f"boundary_at must be 'left' or 'right', got {boundary_at!r}")
+    direction = LEFT if boundary_at == "right" else RIGHT
+    curve = material.wave_curve(state, direction, release)
+    if stress is not None:
+        sigma = float(stress)
+        curve.check_stress(sigma)
+    else:
+        target = direction * (float(velocity) - state.u)  # required g
+        lo, hi = curve.sigma_limits()
+
+        def residual(s):
+            g, dg = curve.velocity_change(s)
+            return g - target, dg
+
+        r_lo, r_hi = residual(lo)[0], residual(hi)[0]
+        if r_hi < 0.0 or r_lo > 0.0:
+            raise NoSolutionError(
+                f"{material.name}: a boundary velocity of {velocity:.6g} m/s needs a stress "
+                f"outside the range of its equation of state ({lo / 1e9:.6g} to "
+                f"{hi / 1e9:.6g} GPa)"
+            )
+        z = material.rho0 * material.sound_speed(state.v, state.e)
+        guess = state.sigma + z * target
+        sigma = bracketed_newton(residual, lo, hi, guess, f_lo=r_lo, f_hi=r_hi)
+    star = curve.state_at(sigma)
+    waves = curve.waves(sigma)
+    if direction == LEFT:
+        return RiemannSolution(waves, (), star, None, bonded_sigma=sigma)
+    return RiemannSolution((), waves, None, star, bonded_sigma=sigma)

@@ -1,0 +1,209 @@
+"""Wave curves: the states one wave can reach from a given state.
+
+For a state ``a`` ahead of a wave of direction ``d`` (+1 right-going, -1
+left-going) the wave curve is the set of states behind it.  It is written as
+
+    u = u_a + d * g(sigma),     g increasing, g(sigma_a) = 0,
+
+so that in the sigma–u plane a right-going curve rises (slope ``+rho0 U``) and a
+left-going curve falls, as in PHYSICS.md.  ``g`` does not depend on ``d`` for an
+isotropic material, which is what lets one Riemann solver intersect any two
+curves: the contact stress solves ``g_L(sigma) + g_R(sigma) = u_L - u_R``.
+
+Every wave-curve class offers the same four things, and the solver uses
+nothing else, so a composite curve (elastic precursor + plastic shock, split
+release, phase transitions) plugs in unchanged:
+
+- ``sigma_limits()``: the open stress range the curve covers inside the
+  material's validity;
+- ``velocity_change(sigma)``: ``(g, dg/dsigma)``;
+- ``state_at(sigma)``: the exact state behind the wave;
+- ``waves(sigma)``: the elementary waves (``Shock``/``Fan``) that realise it,
+  ordered from the fastest (leading) to the slowest.
+
+``HydrodynamicWaveCurve`` is the curve of a convex fluid-like solid: a shock on
+the Hugoniot centred on ``a`` for compression; for release, a centred fan on the
+isentrope (or, on request, a rarefaction shock on that Hugoniot).  For the
+Hugoniot branch ``g = sqrt((sigma - sigma_a)(v_a - v))`` from the mass and
+momentum jumps; for the isentrope ``g = -int_{v_a}^{v} rho0 C_L dv``.
+"""
+
+from __future__ import annotations
+
+import math
+
+from .errors import NoSolutionError, StateOutOfRangeError
+from .roots import bracketed_newton
+from .state import State
+from .waves import Fan, Shock
+
+RELEASE_PATHS = ("isentrope", "hugoniot")
+
+
+class HydrodynamicWaveCurve:
+    """Wave curve of a material with a convex Hugoniot and isentropic release."""
+
+    def __init__(self, material, ahead: State, direction: int, release: str = "isentrope"):
+        if direction not in (1, -1):
+            raise ValueError(f"direction must be +1 or -1, got {direction!r}")
+        if release not in RELEASE_PATHS:
+            raise ValueError(f"release must be one of {RELEASE_PATHS}, got {release!r}")
+        self.material = material
+        self.ahead = ahead
+        self.direction = direction
+        self.release = "hugoniot" if getattr(material, "is_linear", False) else release
+        self._impedance = material.rho0 * material.sound_speed(ahead.v, ahead.e)
+        self._sigma_min: float | None = None
+        self._last_state: State | None = None
+
+    @property
+    def impedance(self) -> float:
+        """Acoustic impedance ``rho0 C_L`` of the ahead state: the curve's slope at its centre."""
+        return self._impedance
+
+    def _on_hugoniot(self, sigma: float) -> bool:
+        return sigma > self.ahead.sigma or self.release == "hugoniot"
+
+    # --- range ----------------------------------------------------------------
+    def sigma_limits(self) -> tuple[float, float]:
+        """Stress range ``(lowest, highest)`` reachable inside the model's validity."""
+        return self.sigma_min(), self.sigma_max()
+
+    def sigma_max(self) -> float:
+        """Highest stress on the curve: the Hugoniot at its limiting compression."""
+        mat, a = self.material, self.ahead
+        return max(mat.hugoniot(a, mat.hugoniot_volume_limit(a))[0], a.sigma)
+
+    def sigma_min(self) -> float:
+        """Lowest stress on the release path inside the model's validity (cached)."""
+        if self._sigma_min is None:
+            v_max = self.material.volume_range()[1]
+            if math.isinf(v_max):
+                low = 0.0
+            else:
+                low = self._release_stress(self._last_valid_volume(v_max * (1.0 - 1e-12)))
+            self._sigma_min = min(low, self.ahead.sigma)
+        return self._sigma_min
+
+    def _release_point(self, v: float) -> tuple[float, float]:
+        """``(sigma, e)`` at volume ``v`` on the release path."""
+        if self.release == "hugoniot":
+            return self.material.hugoniot(self.ahead, v)[:2]
+        return self.material.isentrope(self.ahead, v)
+
+    def _release_stress(self, v: float) -> float:
+        return self._release_point(v)[0]
+
+    def _last_valid_volume(self, v_edge: float) -> float:
+        """Largest volume up to ``v_edge`` where the release path has a real sound speed."""
+
+        def valid(v):
+            return self.material.sound_speed_squared(v, self._release_point(v)[1]) > 0.0
+
+        if valid(v_edge):
+            return v_edge
+        lo, hi = self.ahead.v, v_edge
+        for _ in range(60):
+            mid = 0.5 * (lo + hi)
+            lo, hi = (mid, hi) if valid(mid) else (lo, mid)
+        return lo
+
+    def check_stress(self, sigma: float) -> None:
+        """Raise ``StateOutOfRangeError`` if ``sigma`` is beyond the curve's range."""
+        low, high = self.sigma_limits()
+        if not low <= sigma <= high:
+            raise StateOutOfRangeError(
+                f"{self.material.name}: stress {sigma / 1e9:.6g} GPa is outside the range "
+                f"reachable from {self.ahead.sigma / 1e9:.6g} GPa inside its equation of state "
+                f"({low / 1e9:.6g} to {high / 1e9:.6g} GPa)"
+            )
+
+    # --- the curve ------------------------------------------------------------
+    def _volume(self, sigma: float) -> float:
+        """Volume behind the wave that reaches ``sigma`` (bracketed root in ``v``)."""
+        a, mat = self.ahead, self.material
+        if sigma == a.sigma:
+            return a.v
+        if self._on_hugoniot(sigma):
+            def residual(v):
+                s, _, ds = mat.hugoniot(a, v)
+                return s - sigma, ds
+        else:
+            def residual(v):
+                s, e = mat.isentrope(a, v)
+                return s - sigma, -mat.sound_speed_squared(v, e) * mat.rho0**2
+        if sigma > a.sigma:
+            lo, hi = mat.hugoniot_volume_limit(a), a.v
+        else:
+            lo, hi = a.v, mat.volume_range()[1] * (1.0 - 1e-12)
+            if math.isinf(hi):
+                if sigma <= 0.0:
+                    return math.inf  # a gas expanding to vacuum
+                hi = 2.0 * a.v
+                while residual(hi)[0] > 0.0:
+                    hi *= 4.0
+        # Acoustic first guess: dv = -(dsigma) / (rho0 C)^2.
+        guess = a.v - (sigma - a.sigma) / self._impedance**2
+        try:
+            return bracketed_newton(residual, lo, hi, guess, rel_tol=2e-16)
+        except (NoSolutionError, StateOutOfRangeError):
+            self.check_stress(sigma)  # names the range the stress is outside
+            raise
+
+    def _energy(self, sigma: float, v: float) -> float:
+        if math.isinf(v):
+            return 0.0
+        if self._on_hugoniot(sigma):
+            return self.material.hugoniot(self.ahead, v)[1]
+        return self.material.isentrope(self.ahead, v)[1]
+
+    def _g_at(self, sigma: float, v: float) -> tuple[float, float]:
+        a, mat = self.ahead, self.material
+        if self._on_hugoniot(sigma):
+            jump = (sigma - a.sigma) * (a.v - v)
+            g = math.copysign(math.sqrt(max(jump, 0.0)), sigma - a.sigma)
+            if g == 0.0:
+                return 0.0, 1.0 / self._impedance
+            ds_dv = mat.hugoniot(a, v)[2]
+            return g, ((a.v - v) - (sigma - a.sigma) / ds_dv) / (2.0 * g)
+        c = mat.sound_speed(v, self._energy(sigma, v))
+        slope = 1.0 / (mat.rho0 * c) if c > 0.0 else math.inf
+        return -mat.riemann_integral(a, v), slope
+
+    def velocity_change(self, sigma: float) -> tuple[float, float]:
+        """``(g, dg/dsigma)``: the particle-velocity change ``u - u_a = d * g``."""
+        if sigma == self.ahead.sigma:
+            return 0.0, 1.0 / self._impedance
+        return self._g_at(sigma, self._volume(sigma))
+
+    def state_at(self, sigma: float) -> State:
+        """The state behind the wave that reaches stress ``sigma``."""
+        a = self.ahead
+        if sigma == a.sigma:
+            return a
+        if self._last_state is not None and self._last_state.sigma == sigma:
+            return self._last_state
+        self._last_state = self._state_at(sigma)
+        return self._last_state
+
+    def _state_at(self, sigma: float) -> State:
+        a = self.ahead
+        v = self._volume(sigma)
+        g, _ = self._g_at(sigma, v)
+        return State(sigma=float(sigma), u=float(a.u + self.direction * g), v=float(v),
+                     e=float(self._energy(sigma, v)))
+
+    def waves(self, sigma: float) -> tuple:
+        """Elementary waves realising the jump to ``sigma``, leading wave first."""
+        a = self.ahead
+        if sigma == a.sigma:
+            return ()
+        behind = self.state_at(sigma)
+        d = self.direction
+        if self._on_hugoniot(sigma):
+            speed = (behind.sigma - a.sigma) / (self.material.rho0 * (behind.u - a.u))
+            return (Shock(ahead=a, behind=behind, speed=speed, direction=d),)
+        head = d * self.material.sound_speed(a.v, a.e)
+        tail = d * self.material.sound_speed(behind.v, behind.e)
+        return (Fan(ahead=a, behind=behind, head_speed=head, tail_speed=tail, direction=d,
+                    curve=self),)
