@@ -119,7 +119,7 @@ class Material(ABC):
 
     @abstractmethod
     def riemann_integral(self, through: State, v: float) -> float:
-        """``J = integral from through.v to v of rho0 C_L dv'`` along the isentrope (kg/(m^2 s) m^3/kg).
+        """``J = integral from through.v to v of rho0 C_L dv'`` along the isentrope (m/s).
 
         This is the Riemann-invariant integral: along a right-going simple wave
         ``u - u_through = -J`` (and ``+J`` for a left-going one), because

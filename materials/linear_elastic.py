@@ -33,7 +33,7 @@ class LinearElastic(AffineEnergyMaterial):
     @classmethod
     def from_lame(cls, name: str, rho0: float, lam: float, mu: float,
                   spall_strength: float = math.inf) -> LinearElastic:
-        """Build from the Lamé constants ``lambda`` and ``mu`` (Pa): ``C^2 = (lambda + 2 mu)/rho0``."""
+        """From the Lamé constants ``lambda``, ``mu`` (Pa): ``C^2 = (lambda + 2 mu)/rho0``."""
         modulus = float(lam) + 2.0 * float(mu)
         if not modulus > 0.0:
             raise MaterialError(f"{name}: lambda + 2 mu must be > 0, got {modulus:.6g} Pa")

@@ -32,7 +32,7 @@ from .linear_elastic import _strength
 
 
 class MieGruneisen(AffineEnergyMaterial):
-    """Mie–Grüneisen solid: ``rho0`` (kg/m^3), ``c0`` (m/s), ``s``, ``gamma0``; optional ``cv`` (J/(kg K))."""
+    """Mie–Grüneisen solid: rho0 (kg/m^3), c0 (m/s), s, gamma0, optional cv (J/(kg K))."""
 
     COMPRESSION_LIMIT = 0.95
     TENSION_LIMIT = 0.3
