@@ -1,0 +1,196 @@
+"""The scene: what a plane-wave experiment is made of.
+
+A scene is a stack of plane layers along the Lagrangian coordinate ``X`` (the
+first layer starts at ``X = 0``), the conditions at its two ends, the contacts
+between neighbouring layers, the time to follow it to, the probes to record and
+the accuracy wanted.  All quantities are SI.  An impact is two neighbouring
+layers with different initial velocities.  Scenes are built in Python or read
+from TOML (``fronttrack.scene_file``); both paths end in ``Scene.validate``.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+from materials import Material
+
+BOUNDARY_KINDS = ("free", "wall", "velocity", "stress")
+BONDS = ("bonded", "unbonded")
+RELEASE_PATHS = ("isentrope", "hugoniot")
+
+
+class SceneError(ValueError):
+    """A scene field is missing or outside its allowed range; the message names the field."""
+
+
+@dataclass(frozen=True)
+class Layer:
+    """One plate: ``material``, ``thickness`` (m), initial ``velocity`` (m/s) and ``stress`` (Pa).
+
+    ``bond`` is the contact with the previous layer: ``"bonded"`` (carries
+    tension up to the weaker material's spall strength) or ``"unbonded"`` (opens
+    a gap under any tension).  An initial stress is reached from the reference
+    state along the material's wave curve (a shock if compressive, the
+    isentrope if tensile).
+    """
+
+    material: Material
+    thickness: float
+    velocity: float = 0.0
+    stress: float = 0.0
+    bond: str = "bonded"
+    name: str = ""
+
+
+@dataclass(frozen=True)
+class Boundary:
+    """Condition at one end of the stack.
+
+    ``kind``: ``"free"`` (sigma = 0), ``"wall"`` (u = 0), ``"velocity"`` or
+    ``"stress"`` (a prescribed history).  ``history`` is a tuple of ``(t, value)``
+    points (s, and m/s or Pa), linear in between and constant after the last
+    point; one point means a constant value.
+    """
+
+    kind: str = "free"
+    history: tuple[tuple[float, float], ...] = ()
+
+    def value_at(self, t: float) -> float:
+        """Prescribed velocity (m/s) or stress (Pa) at time ``t`` (s)."""
+        if self.kind == "free" or self.kind == "wall":
+            return 0.0
+        points = self.history
+        if t <= points[0][0]:
+            return points[0][1]
+        for (t0, y0), (t1, y1) in zip(points[:-1], points[1:], strict=True):
+            if t <= t1:
+                return y0 + (y1 - y0) * (t - t0) / (t1 - t0)
+        return points[-1][1]
+
+
+@dataclass(frozen=True)
+class Probe:
+    """A recording station: ``at`` is ``"left"``, ``"right"`` or a Lagrangian position (m)."""
+
+    name: str
+    at: str | float
+
+
+@dataclass(frozen=True)
+class Accuracy:
+    """How exactly to compute, and what to neglect.
+
+    ``rays_per_fan``: rays for a fan spanning the scene's largest stress jump
+    (weaker fans get proportionally fewer, at least one).  ``stress_tolerance``
+    (Pa), if given, is the largest stress step carried by one ray and overrides
+    ``rays_per_fan``.  ``negligible_stress`` (Pa): waves weaker than this are
+    dropped (and the dropped total reported); ``None`` means 1e-12 of the
+    scene's stress scale.  ``release``: ``"isentrope"`` (physical) or
+    ``"hugoniot"`` (rarefaction shocks, the impedance-match shortcut).
+    ``entropy_contacts``: keep the contacts that interactions leave inside a
+    material (neglecting them changes volume and energy, never stress or
+    velocity).  ``max_events``: stop with an error beyond this many events.
+    """
+
+    rays_per_fan: int = 16
+    stress_tolerance: float | None = None
+    negligible_stress: float | None = None
+    release: str = "isentrope"
+    entropy_contacts: bool = True
+    max_events: int = 200_000
+
+
+@dataclass(frozen=True)
+class Scene:
+    """A complete plane-wave scene (SI units)."""
+
+    layers: tuple[Layer, ...]
+    t_end: float
+    left: Boundary = field(default_factory=Boundary)
+    right: Boundary = field(default_factory=Boundary)
+    probes: tuple[Probe, ...] = ()
+    accuracy: Accuracy = field(default_factory=Accuracy)
+    title: str = ""
+
+    @property
+    def length(self) -> float:
+        """Total Lagrangian length of the stack (m)."""
+        return sum(layer.thickness for layer in self.layers)
+
+    def interfaces(self) -> list[float]:
+        """Lagrangian positions (m) of the contacts between layers."""
+        positions, x = [], 0.0
+        for layer in self.layers[:-1]:
+            x += layer.thickness
+            positions.append(x)
+        return positions
+
+    def validate(self) -> Scene:
+        """Check every field; raise ``SceneError`` naming the first bad one. Returns self."""
+        if not self.layers:
+            raise SceneError("layer: a scene needs at least one layer")
+        _finite_positive("t_end", self.t_end, "s")
+        for i, layer in enumerate(self.layers):
+            where = f"layer[{i}]"
+            if not isinstance(layer.material, Material):
+                raise SceneError(f"{where}.material: expected a material, got {layer.material!r}")
+            _finite_positive(f"{where}.thickness", layer.thickness, "m")
+            _finite(f"{where}.velocity", layer.velocity, "m/s")
+            _finite(f"{where}.stress", layer.stress, "Pa")
+            if layer.bond not in BONDS:
+                raise SceneError(f"{where}.bond: must be one of {BONDS}, got {layer.bond!r}")
+        for side, boundary in (("left", self.left), ("right", self.right)):
+            if boundary.kind not in BOUNDARY_KINDS:
+                raise SceneError(
+                    f"{side}.kind: must be one of {BOUNDARY_KINDS}, got {boundary.kind!r}")
+            if boundary.kind in ("velocity", "stress"):
+                if not boundary.history:
+                    raise SceneError(f"{side}.{boundary.kind}: a {boundary.kind} boundary "
+                                     f"needs a value or a history")
+                times = [t for t, _ in boundary.history]
+                if times[0] < 0.0 or any(b <= a for a, b in zip(times[:-1], times[1:])):
+                    raise SceneError(f"{side}.history: times must start at >= 0 s and "
+                                     f"increase strictly, got {times}")
+                for t, value in boundary.history:
+                    _finite(f"{side}.history time", t, "s")
+                    _finite(f"{side}.history value", value, "SI")
+        names = set()
+        for probe in self.probes:
+            if probe.name in names:
+                raise SceneError(f"probe.name: duplicate probe name {probe.name!r}")
+            names.add(probe.name)
+            if isinstance(probe.at, str):
+                if probe.at not in ("left", "right"):
+                    raise SceneError(f"probe[{probe.name}].at: must be 'left', 'right' or a "
+                                     f"position in 0..{self.length * 1e3:.6g} mm")
+            elif not 0.0 <= probe.at <= self.length:
+                raise SceneError(f"probe[{probe.name}].at: position {probe.at * 1e3:.6g} mm is "
+                                 f"outside the stack (0 to {self.length * 1e3:.6g} mm)")
+        acc = self.accuracy
+        if not (isinstance(acc.rays_per_fan, int) and 1 <= acc.rays_per_fan <= 100_000):
+            raise SceneError(f"accuracy.rays_per_fan: must be an integer in 1..100000, "
+                             f"got {acc.rays_per_fan!r}")
+        if acc.stress_tolerance is not None:
+            _finite_positive("accuracy.stress_tolerance", acc.stress_tolerance, "Pa")
+        if acc.negligible_stress is not None and not acc.negligible_stress >= 0.0:
+            raise SceneError(f"accuracy.negligible_stress: must be >= 0 Pa, "
+                             f"got {acc.negligible_stress!r}")
+        if acc.release not in RELEASE_PATHS:
+            raise SceneError(f"accuracy.release: must be one of {RELEASE_PATHS}, "
+                             f"got {acc.release!r}")
+        if not (isinstance(acc.max_events, int) and acc.max_events >= 1):
+            raise SceneError(f"accuracy.max_events: must be a positive integer, "
+                             f"got {acc.max_events!r}")
+        return self
+
+
+def _finite(name: str, value, unit: str) -> None:
+    if not isinstance(value, (int, float)) or not math.isfinite(value):
+        raise SceneError(f"{name}: must be a finite number ({unit}), got {value!r}")
+
+
+def _finite_positive(name: str, value, unit: str) -> None:
+    _finite(name, value, unit)
+    if not value > 0.0:
+        raise SceneError(f"{name}: must be > 0 {unit}, got {value!r}")
