@@ -149,7 +149,8 @@ class Scene:
                     raise SceneError(f"{side}.{boundary.kind}: a {boundary.kind} boundary "
                                      f"needs a value or a history")
                 times = [t for t, _ in boundary.history]
-                if times[0] < 0.0 or any(b <= a for a, b in zip(times[:-1], times[1:])):
+                steps = zip(times[:-1], times[1:], strict=True)
+                if times[0] < 0.0 or any(b <= a for a, b in steps):
                     raise SceneError(f"{side}.history: times must start at >= 0 s and "
                                      f"increase strictly, got {times}")
                 for t, value in boundary.history:
