@@ -85,7 +85,7 @@ class Accuracy:
     (weaker fans get proportionally fewer, at least one).  ``stress_tolerance``
     (Pa), if given, is the largest stress step carried by one ray and overrides
     ``rays_per_fan``.  ``negligible_stress`` (Pa): waves weaker than this are
-    dropped (and the dropped total reported); ``None`` means 1e-12 of the
+    dropped (and the dropped total reported); ``None`` means 1e-6 of the
     scene's stress scale.  ``release``: ``"isentrope"`` (physical) or
     ``"hugoniot"`` (rarefaction shocks, the impedance-match shortcut).
     ``entropy_contacts``: keep the contacts that interactions leave inside a

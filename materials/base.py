@@ -41,6 +41,14 @@ ROOM_TEMPERATURE = 298.15
 """Temperature (K) of the unstressed reference state."""
 
 
+def require_number(name: str, value: float, what: str) -> float:
+    """Return ``value`` as a float, or raise ``MaterialError`` naming ``name`` if it is not one."""
+    try:
+        return float(value)
+    except (TypeError, ValueError) as exc:
+        raise MaterialError(f"{what}: {name} must be a number, got {value!r}") from exc
+
+
 def require_positive(name: str, value: float, what: str) -> float:
     """Return ``value`` as a float if it is finite and > 0, else raise ``MaterialError``."""
     try:

@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import math
 
-from .base import AffineEnergyMaterial, require_positive
+from .base import AffineEnergyMaterial, require_number, require_positive
 from .errors import MaterialError
 from .state import State
 
@@ -25,7 +25,7 @@ class IdealGas(AffineEnergyMaterial):
 
     def __init__(self, name: str, gamma: float, rho0: float, cv: float | None = None):
         self.name = name
-        gamma = float(gamma)
+        gamma = require_number("gamma", gamma, name)
         if not 1.0 < gamma < 100.0:
             raise MaterialError(f"{name}: gamma must be in (1, 100), got {gamma!r}")
         self.gamma = gamma

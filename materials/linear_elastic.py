@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import math
 
-from .base import AffineEnergyMaterial, require_positive
+from .base import AffineEnergyMaterial, require_number, require_positive
 from .errors import MaterialError
 from .state import State
 
@@ -34,8 +34,8 @@ class LinearElastic(AffineEnergyMaterial):
     def from_lame(cls, name: str, rho0: float, lam: float, mu: float,
                   spall_strength: float = math.inf) -> LinearElastic:
         """From the Lamé constants ``lambda``, ``mu`` (Pa): ``C^2 = (lambda + 2 mu)/rho0``."""
-        modulus = float(lam) + 2.0 * float(mu)
-        if not modulus > 0.0:
+        modulus = require_number("lambda", lam, name) + 2.0 * require_number("mu", mu, name)
+        if not (modulus > 0.0 and math.isfinite(modulus)):
             raise MaterialError(f"{name}: lambda + 2 mu must be > 0, got {modulus:.6g} Pa")
         rho0 = require_positive("rho0", rho0, name)
         return cls(name, rho0, math.sqrt(modulus / rho0), spall_strength)
@@ -46,7 +46,10 @@ class LinearElastic(AffineEnergyMaterial):
         return self.rho0 * self.C
 
     def volume_range(self) -> tuple[float, float]:
-        return (1e-9 * self.v0, math.inf)
+        # The law has no spinodal and carries any tension, but the upper bound must be
+        # finite: the wave curves read an infinite one as a gas expanding to vacuum
+        # (sigma = 0 at v = inf).  1e3 v0 is a tension of ~1e3 rho0 C^2, beyond any solid.
+        return (1e-9 * self.v0, 1e3 * self.v0)
 
     def _a(self, v):
         return self.rho0 * self.C**2 * (1.0 - v / self.v0)
@@ -72,7 +75,7 @@ class LinearElastic(AffineEnergyMaterial):
 
 
 def _strength(name: str, value: float) -> float:
-    strength = float(value)
+    strength = require_number("spall_strength", value, name)
     if not strength > 0.0:
         raise MaterialError(f"{name}: spall_strength must be > 0 Pa (or inf), got {value!r}")
     return strength

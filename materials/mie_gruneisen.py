@@ -26,7 +26,7 @@ from __future__ import annotations
 import math
 from functools import lru_cache
 
-from .base import ROOM_TEMPERATURE, AffineEnergyMaterial, require_positive
+from .base import ROOM_TEMPERATURE, AffineEnergyMaterial, require_number, require_positive
 from .errors import MaterialError
 from .linear_elastic import _strength
 
@@ -44,7 +44,7 @@ class MieGruneisen(AffineEnergyMaterial):
         self.rho0 = require_positive("rho0", rho0, name)
         self.c0 = require_positive("c0", c0, name)
         self.s = require_positive("s", s, name)
-        gamma0 = float(gamma0)
+        gamma0 = require_number("gamma0", gamma0, name)
         if not 0.0 <= gamma0 < 10.0:
             raise MaterialError(f"{name}: gamma0 must be in [0, 10), got {gamma0!r}")
         self.gamma0 = gamma0

@@ -43,6 +43,10 @@ RELEASE_PATHS = ("isentrope", "hugoniot")
 class HydrodynamicWaveCurve:
     """Wave curve of a material with a convex Hugoniot and isentropic release."""
 
+    _WEAK_JUMP = 1e-5
+    """Relative volume jump below which a shock's speed is taken from the Hugoniot's
+    tangent rather than from the chord of the stored states (see ``waves``)."""
+
     def __init__(self, material, ahead: State, direction: int, release: str = "isentrope"):
         if direction not in (1, -1):
             raise ValueError(f"direction must be +1 or -1, got {direction!r}")
@@ -72,7 +76,10 @@ class HydrodynamicWaveCurve:
     def sigma_max(self) -> float:
         """Highest stress on the curve: the Hugoniot at its limiting compression."""
         mat, a = self.material, self.ahead
-        return max(mat.hugoniot(a, mat.hugoniot_volume_limit(a))[0], a.sigma)
+        # Shifted by the same rounding offset as the residual in ``_volume``, so that
+        # ``state_at(sigma_max())`` is bracketed.
+        offset = mat.hugoniot(a, a.v)[0] - a.sigma if math.isfinite(a.v) else 0.0
+        return max(mat.hugoniot(a, mat.hugoniot_volume_limit(a))[0] - offset, a.sigma)
 
     def sigma_min(self) -> float:
         """Lowest stress on the release path inside the model's validity (cached)."""
@@ -81,7 +88,11 @@ class HydrodynamicWaveCurve:
             if math.isinf(v_max):
                 low = 0.0
             else:
-                low = self._release_stress(self._last_valid_volume(v_max * (1.0 - 1e-12)))
+                # Shifted by the rounding offset the residual in ``_volume`` subtracts
+                # (path stress at v_a minus sigma_a), so ``state_at(sigma_min())`` is bracketed.
+                offset = self._release_stress(self.ahead.v) - self.ahead.sigma
+                low = self._release_stress(
+                    self._last_valid_volume(v_max * (1.0 - 1e-12))) - offset
             self._sigma_min = min(low, self.ahead.sigma)
         return self._sigma_min
 
@@ -124,14 +135,20 @@ class HydrodynamicWaveCurve:
         a, mat = self.ahead, self.material
         if sigma == a.sigma:
             return a.v
+        # The path's own stress at v_a differs from the recorded sigma_a by rounding;
+        # subtracting it makes the residual at v_a exactly sigma_a - sigma.
         if self._on_hugoniot(sigma):
+            offset = mat.hugoniot(a, a.v)[0] - a.sigma
+
             def residual(v):
                 s, _, ds = mat.hugoniot(a, v)
-                return s - sigma, ds
+                return s - offset - sigma, ds
         else:
+            offset = mat.isentrope(a, a.v)[0] - a.sigma
+
             def residual(v):
                 s, e = mat.isentrope(a, v)
-                return s - sigma, -mat.sound_speed_squared(v, e) * mat.rho0**2
+                return s - offset - sigma, -mat.sound_speed_squared(v, e) * mat.rho0**2
         if sigma > a.sigma:
             lo, hi = mat.hugoniot_volume_limit(a), a.v
         else:
@@ -201,7 +218,21 @@ class HydrodynamicWaveCurve:
         behind = self.state_at(sigma)
         d = self.direction
         if self._on_hugoniot(sigma):
-            speed = (behind.sigma - a.sigma) / (self.material.rho0 * (behind.u - a.u))
+            mat = self.material
+            if getattr(mat, "is_linear", False):
+                # Every wave of a linear elastic solid moves at exactly C; the ratio of
+                # differences below would carry the rounding of the stored volumes.
+                speed = d * mat.sound_speed(a.v, a.e)
+            elif abs(behind.v - a.v) > self._WEAK_JUMP * a.v:
+                speed = (behind.sigma - a.sigma) / (mat.rho0 * (behind.u - a.u))
+            else:
+                # So weak a jump that the stored volumes resolve v_a - v_b only to
+                # ulp(v)/|dv| > 1e-11: the chord U^2 = -v0^2 (sigma_b - sigma_a)/(v_b - v_a)
+                # is rounding noise (a 1e-7 Pa jump in Al gave 500 m/s, not 5350 m/s).
+                # The Hugoniot's tangent at the mid volume equals the chord to O(dv^2).
+                slope = mat.hugoniot(a, 0.5 * (a.v + behind.v))[2]
+                speed = d * (mat.v0 * math.sqrt(-slope) if slope < 0.0
+                             else self._impedance / mat.rho0)
             return (Shock(ahead=a, behind=behind, speed=speed, direction=d),)
         head = d * self.material.sound_speed(a.v, a.e)
         tail = d * self.material.sound_speed(behind.v, behind.e)

@@ -1,0 +1,556 @@
+"""The front-tracking event queue.
+
+The scene's initial data is piecewise constant, so every layer boundary is a
+Riemann problem at ``t = 0``.  The engine keeps the live fronts ordered in X
+(a doubly linked list), computes when each pair of neighbours meets, and keeps
+those meeting times in a heap with lazy invalidation (an entry is stale once
+either front has died or the two are no longer neighbours).  It pops the
+earliest event, gathers every front that passes through the same point at
+that time (symmetric scenes make several meet on purpose), and replaces them
+by the solution of one Riemann problem between the state left of the group and
+the state right of it:
+
+- at a boundary: the reflected wave from ``solve_boundary``;
+- at an interface or entropy contact: ``solve_contact`` with the contact's
+  tensile strength (0 if unbonded, the weaker spall strength if bonded); if
+  the contact would go beyond it, it opens into a gap (two free surfaces);
+- at an open gap: each surface reflects as a free surface; the gap closes
+  (a new impact) when the Eulerian positions of its two surfaces meet;
+- inside a material (collision, overtaking, ray crossings): ``solve_contact``
+  with the material's spall strength; a tension beyond it fractures the
+  material there (spall).  The two star states may differ in entropy; the
+  difference is kept as a new contact unless it is negligible or neglected.
+
+Outgoing fans are split into rays (``characteristics.rays``).  Waves weaker
+than the negligible stress are dropped and their total is reported.
+"""
+
+from __future__ import annotations
+
+import heapq
+import itertools
+import math
+import time
+
+from characteristics.rays import discretise_fan, ray_count
+from materials import LEFT, RIGHT, Fan, State, solve_boundary, solve_contact
+
+from .fronts import Front, Region
+from .scene import Scene
+from .solution import EventRecord, Solution, SpallRecord
+
+
+NEGLIGIBLE_FRACTION = 1e-6
+"""Default negligible wave: this fraction of the scene's stress scale.  Echoes in a
+multi-layer stack multiply at every crossing of an interface; those weaker than
+a millionth of the peak are dropped (their total is reported) unless the scene
+asks for a smaller ``accuracy.negligible_stress``."""
+
+ENTROPY_JUMP_TOLERANCE = 1e-9
+"""Entropy contacts whose relative volume jump is below this are not tracked: they
+reflect less than ~1e-9 of any wave crossing them, but every crossing would be an event."""
+
+
+class EventLimitError(RuntimeError):
+    """The scene needed more events than ``accuracy.max_events`` allows."""
+
+
+def initial_state(layer) -> State:
+    """A layer's initial state: at rest stress reached along its wave curve, moving at ``velocity``."""
+    material = layer.material
+    reference = material.reference_state()
+    if layer.stress != 0.0:
+        reference = material.wave_curve(reference, RIGHT).state_at(layer.stress)
+    return reference.moving(layer.velocity)
+
+
+class Engine:
+    """Evolves one scene; ``run()`` returns a ``Solution``."""
+
+    def __init__(self, scene: Scene, progress=None):
+        self.scene = scene.validate()
+        self.acc = scene.accuracy
+        self.progress = progress
+        self._ids = itertools.count()
+        self._region_ids = itertools.count()
+        self._wave_ids = itertools.count()
+        self._seq = itertools.count()
+        self._heap: list = []
+        self.fronts: list[Front] = []
+        self.regions: list[Region] = []
+        self.events: list[EventRecord] = []
+        self.spalls: list[SpallRecord] = []
+        self.dropped_stress = 0.0
+        self.dropped_count = 0
+        self.neglected_entropy = 0.0
+        self.min_stress: tuple[float, float, float] | None = None
+        length = scene.length
+        self.x_tol = 1e-10 * length
+        self.t_end = scene.t_end
+
+    # --- set-up -------------------------------------------------------------
+    def _new_front(self, kind: str, x0: float, t0: float, **kw) -> Front:
+        front = Front(id=next(self._ids), kind=kind, x0=x0, t0=t0, **kw)
+        self.fronts.append(front)
+        return front
+
+    def _new_region(self, state: State, material, layer: int, t: float,
+                    left_point, right_point) -> Region:
+        region = Region(id=next(self._region_ids), state=state, material=material, layer=layer,
+                        t_start=t, left_points=[left_point], right_points=[right_point])
+        self.regions.append(region)
+        self._note_stress(region, left_point, right_point)
+        return region
+
+    def _note_stress(self, region: Region, left_point, right_point) -> None:
+        sigma = region.state.sigma
+        if self.min_stress is None or sigma < self.min_stress[0]:
+            x = 0.5 * (left_point[0] + right_point[0])
+            self.min_stress = (sigma, x, region.t_start)
+
+    def _build(self) -> None:
+        scene = self.scene
+        states = [initial_state(layer) for layer in scene.layers]
+        self.stress_scale = self._stress_scale(states)
+        self.negligible = (self.acc.negligible_stress if self.acc.negligible_stress is not None
+                           else NEGLIGIBLE_FRACTION * self.stress_scale)
+        if self.acc.stress_tolerance is not None:
+            self.ray_step = self.acc.stress_tolerance
+        else:
+            self.ray_step = self.stress_scale / self.acc.rays_per_fan
+        left = self._new_front("boundary", 0.0, 0.0, side="left")
+        fronts = [left]
+        x = 0.0
+        for i, layer in enumerate(scene.layers):
+            x_next = x + layer.thickness
+            region = self._new_region(states[i], layer.material, i, 0.0, (x, 0.0), (x_next, 0.0))
+            fronts[-1].region_right = region
+            if i + 1 < len(scene.layers):
+                nxt = scene.layers[i + 1]
+                bond = nxt.bond
+                strength = 0.0 if bond == "unbonded" else min(
+                    layer.material.spall_strength, nxt.material.spall_strength)
+                fronts.append(self._new_front("interface", x_next, 0.0, bond=bond,
+                                              strength=strength))
+            x = x_next
+        fronts.append(self._new_front("boundary", x, 0.0, side="right"))
+        for a, b in zip(fronts[:-1], fronts[1:], strict=True):
+            a.next, b.prev = b, a
+        self.head = left
+        for front in fronts:
+            self._push_site(front, 0.0)
+        for boundary, spec in ((left, scene.left), (fronts[-1], scene.right)):
+            boundary.history = self._boundary_steps(spec, boundary)
+            if boundary.history:
+                self._push_site(boundary, boundary.history[0][0])
+
+    def _stress_scale(self, states: list[State]) -> float:
+        """Largest stress the initial Riemann problems produce (Pa): scales rays and thresholds."""
+        scene = self.scene
+        scale = max(abs(s.sigma) for s in states)
+        for i in range(len(states) - 1):
+            a, b = scene.layers[i].material, scene.layers[i + 1].material
+            if states[i].u != states[i + 1].u or states[i].sigma != states[i + 1].sigma:
+                sol = solve_contact(a, states[i], b, states[i + 1], 0.0, self.acc.release)
+                scale = max(scale, abs(sol.bonded_sigma))
+        for spec, state, mat, side in ((scene.left, states[0], scene.layers[0].material, "left"),
+                                       (scene.right, states[-1], scene.layers[-1].material,
+                                        "right")):
+            for _, value in spec.history:
+                if spec.kind == "stress":
+                    scale = max(scale, abs(value))
+                elif spec.kind == "velocity":
+                    sol = solve_boundary(mat, state, side, velocity=value,
+                                         release=self.acc.release)
+                    scale = max(scale, abs(sol.bonded_sigma))
+        if scale == 0.0:
+            scale = max(layer.material.rho0 * layer.material.sound_speed(s.v, s.e) * 1.0
+                        for layer, s in zip(scene.layers, states, strict=True))
+        return scale
+
+    def _boundary_steps(self, spec, boundary: Front) -> list[tuple[float, float]]:
+        """Times (s) and values at which a prescribed history changes the boundary value.
+
+        Ramps are replaced by steps at sub-intervals small enough that each step
+        carries at most one ray's stress; the value of each step is the
+        history's value at the middle of its sub-interval (second order).
+        """
+        if spec.kind not in ("velocity", "stress") or len(spec.history) < 2:
+            return []
+        side = boundary.side
+        layer = self.scene.layers[0] if side == "left" else self.scene.layers[-1]
+        impedance = layer.material.rho0 * layer.material.sound_speed(layer.material.v0, 0.0)
+        steps = []
+        for (t0, y0), (t1, y1) in zip(spec.history[:-1], spec.history[1:], strict=True):
+            jump = abs(y1 - y0) * (impedance if spec.kind == "velocity" else 1.0)
+            count = max(1, math.ceil(jump / self.ray_step)) if jump > 0 else 0
+            for k in range(count):
+                ta = t0 + (t1 - t0) * k / count
+                tb = t0 + (t1 - t0) * (k + 1) / count
+                steps.append((ta if k else max(ta, 0.0), spec.value_at(0.5 * (ta + tb))))
+            if count:
+                steps.append((t1, y1))
+        # the value before the first step is value_at(0); drop steps with no change
+        result, last = [], spec.value_at(0.0)
+        for t, value in steps:
+            if value != last and t <= self.t_end:
+                result.append((t, value))
+                last = value
+        return result
+
+    # --- queue --------------------------------------------------------------
+    def _push_site(self, front: Front, t: float) -> None:
+        if t <= self.t_end:
+            heapq.heappush(self._heap, (t, next(self._seq), "site", front, front.gap_version))
+
+    def _push_pair(self, a: Front, b: Front, now: float) -> None:
+        closing = a.speed - b.speed
+        if closing <= 0.0:
+            return
+        gap = b.position(now) - a.position(now)
+        t = now + max(gap, 0.0) / closing
+        if t <= self.t_end:
+            heapq.heappush(self._heap, (t, next(self._seq), "pair", a, b))
+
+    def _push_gap_closure(self, gap: Front) -> None:
+        left, right = gap.prev.region_right.state.u, gap.region_right.state.u
+        gap.gap_version += 1
+        if left > right:
+            t = gap.gap_time + gap.gap_width / (left - right)
+            self._push_site(gap, t)
+
+    # --- main loop ----------------------------------------------------------
+    def run(self) -> Solution:
+        start = time.perf_counter()
+        self._build()
+        count = 0
+        while self._heap:
+            entry = heapq.heappop(self._heap)
+            t = entry[0]
+            if entry[2] == "pair":
+                a, b = entry[3], entry[4]
+                if not (a.alive and b.alive and a.next is b):
+                    continue
+                x = self._meeting_point(a, b, t)
+                seed = [a, b]
+            else:
+                front, version = entry[3], entry[4]
+                if not front.alive or version != front.gap_version:
+                    continue
+                x = front.x0
+                seed = [front]
+            count += 1
+            if count > self.acc.max_events:
+                raise EventLimitError(
+                    f"accuracy.max_events: the scene needed more than {self.acc.max_events} "
+                    f"events before t = {t * 1e6:.6g} us (t_end = {self.t_end * 1e6:.6g} us); "
+                    f"raise max_events, shorten t_end or coarsen the fans (rays_per_fan)")
+            self._process(seed, t, x, timer=entry[2] == "site")
+            if self.progress is not None and count % 1000 == 0:
+                self.progress(count, t)
+        self._finish()
+        elapsed = time.perf_counter() - start
+        return Solution.from_engine(self, elapsed)
+
+    def _meeting_point(self, a: Front, b: Front, t: float) -> float:
+        if a.speed == 0.0:
+            return a.x0
+        if b.speed == 0.0:
+            return b.x0
+        return 0.5 * (a.position(t) + b.position(t))
+
+    def _gather(self, seed: list[Front], t: float, x: float) -> list[Front]:
+        """All consecutive fronts through ``(x, t)``, at most one site among them."""
+        group = list(seed)
+        sites = sum(f.is_site for f in group)
+        while True:
+            p = group[0].prev
+            if p is None or abs(p.position(t) - x) > self.x_tol or (p.is_site and sites):
+                break
+            group.insert(0, p)
+            sites += p.is_site
+        while True:
+            n = group[-1].next
+            if n is None or abs(n.position(t) - x) > self.x_tol or (n.is_site and sites):
+                break
+            group.append(n)
+            sites += n.is_site
+        return group
+
+    # --- one event ------------------------------------------------------------
+    def _process(self, seed: list[Front], t: float, x: float, timer: bool) -> None:
+        group = self._gather(seed, t, x)
+        sites = [f for f in group if f.is_site]
+        site = sites[0] if sites else None
+        before = group[0].prev
+        after = group[-1].next
+        region_left = before.region_right if before is not None else None
+        region_right = group[-1].region_right
+        incoming = [f for f in group if not f.is_site]
+        if site is not None and site.kind == "gap":
+            site.gap_width += (region_right.state.u - region_left.state.u) * (t - site.gap_time)
+            site.gap_time = t
+        kind, solution, new_site = self._solve(site, region_left, region_right, t, x, incoming,
+                                               timer)
+        if site is None and new_site is None and not incoming:
+            return
+        self._replace(group, site, new_site, solution, region_left, region_right, t, x,
+                      incoming, kind)
+
+    def _contact_strength(self, site: Front | None, material) -> float:
+        if site is None or site.kind == "contact":
+            return material.spall_strength
+        return site.strength
+
+    def _solve(self, site, region_left, region_right, t, x, incoming, timer):
+        """Riemann problem at the event; returns ``(kind, solution, new_site)``."""
+        release = self.acc.release
+        if site is not None and site.kind == "boundary":
+            spec = self.scene.left if site.side == "left" else self.scene.right
+            region = region_right if site.side == "left" else region_left
+            value = self._boundary_value(site, spec, t)
+            if spec.kind in ("free", "stress"):
+                sol = solve_boundary(region.material, region.state, site.side, stress=value,
+                                     release=release)
+            else:
+                sol = solve_boundary(region.material, region.state, site.side, velocity=value,
+                                     release=release)
+            return ("reflection" if incoming else "boundary"), sol, None
+        if site is not None and site.kind == "gap":
+            if timer and not incoming:
+                site.kind = "interface"
+                site.bond = "unbonded"
+                site.strength = 0.0
+                site.gap_version += 1
+                self._log_site_kind(site, t)
+                sol = solve_contact(region_left.material, region_left.state,
+                                    region_right.material, region_right.state, 0.0, release)
+                return "gap-close", sol, None
+            left = solve_boundary(region_left.material, region_left.state, "right", stress=0.0,
+                                  release=release)
+            right = solve_boundary(region_right.material, region_right.state, "left",
+                                   stress=0.0, release=release)
+            return "reflection", _combine(left, right), None
+        strength = self._contact_strength(site, region_left.material)
+        sol = solve_contact(region_left.material, region_left.state, region_right.material,
+                            region_right.state, strength, release)
+        if site is None:
+            kind = _interaction_kind(incoming)
+        elif not incoming:
+            kind = "impact"
+        else:
+            kind = "transmission"
+        new_site = None
+        if sol.separated:
+            if site is None or site.kind == "contact":
+                kind = "spall"
+                self.spalls.append(SpallRecord(x=x, t=t, tension=-sol.bonded_sigma,
+                                               strength=strength))
+            else:
+                kind = "gap-open"
+            if site is None:
+                new_site = self._new_front("gap", x, t, bond="unbonded")
+                new_site.gap_time = t
+            else:
+                site.kind = "gap"
+                site.gap_width, site.gap_time = 0.0, t
+                self._log_site_kind(site, t)
+        return kind, sol, new_site
+
+    def _log_site_kind(self, site: Front, t: float) -> None:
+        site.history.append((t, site.kind))
+
+    def _boundary_value(self, site: Front, spec, t: float) -> float:
+        if spec.kind in ("free", "wall"):
+            return 0.0
+        value = spec.value_at(0.0)
+        for step_time, step_value in site.history:
+            if step_time <= t * (1.0 + 1e-15):
+                value = step_value
+        return value
+
+    # --- rebuilding the front list ----------------------------------------------
+    def _wave_fronts(self, waves, material, t, x, incoming, direction):
+        """Front specs (front, state behind it on the contact side) for one family of waves."""
+        specs = []
+        if not waves:
+            return specs
+        ahead = waves[0].ahead
+        behind = waves[-1].behind
+        if abs(behind.sigma - ahead.sigma) <= self.negligible:
+            self.dropped_stress += abs(behind.sigma - ahead.sigma)
+            self.dropped_count += 1
+            return None
+        parent = next((f for f in incoming if f.direction == direction), None)
+        for wave in waves:
+            if isinstance(wave, Fan):
+                rays = discretise_fan(wave, material, ray_count(wave, self.ray_step))
+                if len(rays) == 1 and parent is not None and parent.kind == "ray":
+                    fan, index, count = parent.fan, parent.ray_index, parent.ray_count
+                else:
+                    fan, index, count = next(self._wave_ids), None, len(rays)
+                for ray in rays:
+                    front = self._new_front("ray", x, t, speed=ray.speed, fan=fan,
+                                            ray_index=ray.index if index is None else index,
+                                            ray_count=count, direction=direction,
+                                            jump=ray.behind.sigma - ray.ahead.sigma)
+                    specs.append((front, ray.ahead, ray.behind))
+            else:
+                wave_id = (parent.wave if parent is not None and parent.kind == "shock"
+                           else next(self._wave_ids))
+                front = self._new_front("shock", x, t, speed=wave.speed, wave=wave_id,
+                                        direction=direction,
+                                        jump=wave.behind.sigma - wave.ahead.sigma)
+                specs.append((front, wave.ahead, wave.behind))
+        return specs
+
+    def _replace(self, group, site, new_site, sol, region_left, region_right, t, x, incoming,
+                 kind):
+        material_left = region_left.material if region_left is not None else None
+        material_right = region_right.material if region_right is not None else None
+        left_specs = self._wave_fronts(sol.left_waves, material_left, t, x, incoming, LEFT)
+        right_specs = self._wave_fronts(sol.right_waves, material_right, t, x, incoming, RIGHT)
+        left_star = sol.left_star if left_specs is not None else (
+            region_left.state if region_left is not None else None)
+        right_star = sol.right_star if right_specs is not None else (
+            region_right.state if region_right is not None else None)
+        left_specs = left_specs or []
+        right_specs = right_specs or []
+        middle = site if site is not None else new_site
+        if middle is None and left_star is not None and right_star is not None:
+            middle = self._entropy_contact(left_star, right_star, t, x)
+            if middle is None and not self.acc.entropy_contacts:
+                left_star = right_star = _merged(left_star, right_star)
+        # Fronts left to right, each with the state on its right.
+        items, right_of = [], []
+        for k, (front, _, behind) in enumerate(left_specs):
+            items.append(front)
+            right_of.append(left_star if k == len(left_specs) - 1 else behind)
+        if middle is not None:
+            items.append(middle)
+            right_of.append(right_star)
+        for front, ahead, _ in reversed(right_specs):
+            items.append(front)
+            right_of.append(ahead)
+        between = right_of[:-1]
+        self._splice(group, items, between, region_left, region_right, t, x, middle)
+        if middle is not None and middle.kind == "gap":
+            self._push_gap_closure(middle)
+        self.events.append(EventRecord(
+            t=t, x=x, kind=kind, incoming=[f.id for f in incoming],
+            outgoing=[f.id for f in items if not f.is_site],
+            site=middle.id if middle is not None else None))
+
+    def _entropy_contact(self, left: State, right: State, t: float, x: float) -> Front | None:
+        jump = abs(left.v - right.v)
+        if not jump > ENTROPY_JUMP_TOLERANCE * max(left.v, right.v):
+            self.neglected_entropy = max(self.neglected_entropy, jump / max(left.v, right.v))
+            return None
+        if not self.acc.entropy_contacts:
+            self.neglected_entropy = max(self.neglected_entropy,
+                                         jump / max(left.v, right.v))
+            return None
+        return self._new_front("contact", x, t, bond="bonded")
+
+    def _splice(self, group, items, between, region_left, region_right, t, x, middle):
+        """Kill ``group`` (except a continuing site), link ``items`` and make their regions."""
+        before, after = group[0].prev, group[-1].next
+        point = (x, t)
+        for front in group:
+            if front is middle:
+                continue
+            front.alive = False
+            front.t1, front.x1 = t, x
+            front.right_region_id = front.region_right.id if front.region_right else None
+        for front in group[:-1]:
+            region = front.region_right
+            if region is not None and region.t_end is None:
+                region.left_points.append(point)
+                region.right_points.append(point)
+                region.t_end = t
+        if not items:
+            self._merge(before, after, region_left, region_right, t, x)
+            return
+        if region_left is not None:
+            region_left.right_points.append(point)
+        if region_right is not None:
+            region_right.left_points.append(point)
+        chain = ([before] if before is not None else []) + items + (
+            [after] if after is not None else [])
+        for a, b in zip(chain[:-1], chain[1:], strict=True):
+            a.next, b.prev = b, a
+        if before is None:
+            self.head = items[0]
+        layer_left = region_left.layer if region_left is not None else region_right.layer
+        layer_right = region_right.layer if region_right is not None else layer_left
+        for k, front in enumerate(items):
+            front.left_region = (items[k - 1].region_right.id if k > 0 else
+                                 (region_left.id if region_left is not None else None))
+            if k + 1 < len(items):
+                state = between[k]
+                on_right = middle is not None and items.index(middle) <= k
+                material = region_right.material if on_right else region_left.material
+                layer = layer_right if on_right else layer_left
+                region = self._new_region(state, material, layer, t, point, point)
+                region.in_fan = front.kind == "ray" or items[k + 1].kind == "ray"
+                front.region_right = region
+            else:
+                front.region_right = region_right
+        for a, b in zip(chain[:-1], chain[1:], strict=True):
+            self._push_pair(a, b, t)
+
+    def _merge(self, before, after, region_left, region_right, t, x):
+        """No front leaves the event: the two neighbouring regions become one."""
+        x_left = before.position(t)
+        x_right = after.position(t)
+        for region, top in ((region_left, (x_left, t)), (region_right, (x_right, t))):
+            region.right_points.append((x, t) if region is region_left else (x_right, t))
+            region.left_points.append(top if region is region_left else (x, t))
+            region.t_end = t
+        state = _merged(region_left.state, region_right.state)
+        merged = self._new_region(state, region_left.material, region_left.layer, t,
+                                  (x_left, t), (x_right, t))
+        before.next, after.prev = after, before
+        before.region_right = merged
+        self._push_pair(before, after, t)
+
+    def _finish(self) -> None:
+        t = self.t_end
+        front = self.head
+        while front is not None:
+            if front.alive:
+                front.t1, front.x1 = t, front.position(t)
+                front.right_region_id = front.region_right.id if front.region_right else None
+            region = front.region_right
+            if region is not None and region.t_end is None:
+                region.left_points.append((front.position(t), t))
+                region.right_points.append((front.next.position(t), t))
+                region.t_end = t
+            front = front.next
+
+
+def _combine(left_solution, right_solution):
+    """Two independent free-surface reflections on either side of an open gap."""
+    from materials import RiemannSolution
+
+    return RiemannSolution(left_waves=left_solution.left_waves,
+                           right_waves=right_solution.right_waves,
+                           left_star=left_solution.left_star,
+                           right_star=right_solution.right_star, separated=True,
+                           bonded_sigma=0.0)
+
+
+def _merged(a: State, b: State) -> State:
+    """One state standing for two that differ negligibly (mean of each field)."""
+    return State(sigma=0.5 * (a.sigma + b.sigma), u=0.5 * (a.u + b.u), v=0.5 * (a.v + b.v),
+                 e=0.5 * (a.e + b.e), plastic_strain=0.5 * (a.plastic_strain + b.plastic_strain))
+
+
+def _interaction_kind(incoming) -> str:
+    directions = {f.direction for f in incoming}
+    return "collision" if directions == {LEFT, RIGHT} else "overtake"
+
+
+def run(scene: Scene, progress=None) -> Solution:
+    """Evolve ``scene`` to ``scene.t_end`` and return its ``Solution``."""
+    return Engine(scene, progress).run()
