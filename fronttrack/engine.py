@@ -39,7 +39,6 @@ from .fronts import Front, Region
 from .scene import Scene
 from .solution import EventRecord, Solution, SpallRecord
 
-
 NEGLIGIBLE_FRACTION = 1e-6
 """Default negligible wave: this fraction of the scene's stress scale.  Echoes in a
 multi-layer stack multiply at every crossing of an interface; those weaker than
@@ -47,8 +46,8 @@ a millionth of the peak are dropped (their total is reported) unless the scene
 asks for a smaller ``accuracy.negligible_stress``."""
 
 ENTROPY_JUMP_TOLERANCE = 1e-9
-"""Entropy contacts whose relative volume jump is below this are not tracked: they
-reflect less than ~1e-9 of any wave crossing them, but every crossing would be an event."""
+"""Entropy contacts whose relative volume jump is below this are rounding, never tracked.
+Larger ones are tracked unless they would reflect less than the negligible stress."""
 
 
 class EventLimitError(RuntimeError):
@@ -56,7 +55,7 @@ class EventLimitError(RuntimeError):
 
 
 def initial_state(layer) -> State:
-    """A layer's initial state: at rest stress reached along its wave curve, moving at ``velocity``."""
+    """A layer's initial state: its stress reached along its wave curve, moving at ``velocity``."""
     material = layer.material
     reference = material.reference_state()
     if layer.stress != 0.0:
@@ -83,6 +82,7 @@ class Engine:
         self.dropped_stress = 0.0
         self.dropped_count = 0
         self.neglected_entropy = 0.0
+        self.neglected_contacts = 0
         self.min_stress: tuple[float, float, float] | None = None
         length = scene.length
         self.x_tol = 1e-10 * length
@@ -283,7 +283,6 @@ class Engine:
         sites = [f for f in group if f.is_site]
         site = sites[0] if sites else None
         before = group[0].prev
-        after = group[-1].next
         region_left = before.region_right if before is not None else None
         region_right = group[-1].region_right
         incoming = [f for f in group if not f.is_site]
@@ -418,8 +417,8 @@ class Engine:
         right_specs = right_specs or []
         middle = site if site is not None else new_site
         if middle is None and left_star is not None and right_star is not None:
-            middle = self._entropy_contact(left_star, right_star, t, x)
-            if middle is None and not self.acc.entropy_contacts:
+            middle = self._entropy_contact(left_star, right_star, material_left, t, x)
+            if middle is None:
                 left_star = right_star = _merged(left_star, right_star)
         # Fronts left to right, each with the state on its right.
         items, right_of = [], []
@@ -441,16 +440,28 @@ class Engine:
             outgoing=[f.id for f in items if not f.is_site],
             site=middle.id if middle is not None else None))
 
-    def _entropy_contact(self, left: State, right: State, t: float, x: float) -> Front | None:
-        jump = abs(left.v - right.v)
-        if not jump > ENTROPY_JUMP_TOLERANCE * max(left.v, right.v):
-            self.neglected_entropy = max(self.neglected_entropy, jump / max(left.v, right.v))
-            return None
-        if not self.acc.entropy_contacts:
-            self.neglected_entropy = max(self.neglected_entropy,
-                                         jump / max(left.v, right.v))
-            return None
-        return self._new_front("contact", x, t, bond="bonded")
+    def _entropy_contact(self, left: State, right: State, material, t: float,
+                         x: float) -> Front | None:
+        """A contact for the entropy jump between two star states, if it matters.
+
+        A wave of stress ``S`` crossing a contact between impedances ``Z_l`` and
+        ``Z_r`` reflects ``S |Z_l - Z_r| / (Z_l + Z_r)``.  A contact that would
+        reflect less than the negligible stress from the scene's largest wave is
+        not tracked (every later crossing would be an event for nothing): the two
+        states are merged and the largest relative volume jump so neglected is
+        reported.  Jumps below ``ENTROPY_JUMP_TOLERANCE`` are rounding.
+        """
+        jump = abs(left.v - right.v) / max(left.v, right.v)
+        keep = self.acc.entropy_contacts and jump > ENTROPY_JUMP_TOLERANCE
+        if keep and self.negligible > 0.0 and math.isfinite(left.v + right.v):
+            z_l = material.sound_speed(left.v, left.e)
+            z_r = material.sound_speed(right.v, right.e)
+            keep = self.stress_scale * abs(z_l - z_r) / (z_l + z_r) > self.negligible
+        if keep:
+            return self._new_front("contact", x, t, bond="bonded")
+        self.neglected_entropy = max(self.neglected_entropy, jump)
+        self.neglected_contacts += jump > ENTROPY_JUMP_TOLERANCE
+        return None
 
     def _splice(self, group, items, between, region_left, region_right, t, x, middle):
         """Kill ``group`` (except a continuing site), link ``items`` and make their regions."""

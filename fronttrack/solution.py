@@ -103,6 +103,7 @@ class Solution:
             "dropped_waves": engine.dropped_count,
             "dropped_stress_total": engine.dropped_stress,
             "neglected_entropy_volume_jump": engine.neglected_entropy,
+            "neglected_entropy_contacts": engine.neglected_contacts,
         }
         return cls(scene=engine.scene, fronts=fronts, regions=engine.regions,
                    events=engine.events, spalls=engine.spalls, stats=stats,

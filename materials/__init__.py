@@ -8,6 +8,7 @@ about fronts or events.
 from .base import Material
 from .errors import MaterialError, NoSolutionError, StateOutOfRangeError
 from .ideal_gas import IdealGas
+from .library import available, get, material_from_spec
 from .linear_elastic import LinearElastic
 from .mie_gruneisen import MieGruneisen
 from .riemann import RiemannSolution, solve_boundary, solve_contact
@@ -17,5 +18,6 @@ from .waves import Fan, Shock
 __all__ = [
     "LEFT", "RIGHT", "Fan", "IdealGas", "LinearElastic", "Material", "MaterialError",
     "MieGruneisen", "NoSolutionError", "RiemannSolution", "Shock", "State",
-    "StateOutOfRangeError", "solve_boundary", "solve_contact",
+    "StateOutOfRangeError", "available", "get", "material_from_spec", "solve_boundary",
+    "solve_contact",
 ]

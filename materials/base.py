@@ -27,6 +27,7 @@ this from the three functions ``A``, ``A'`` and ``B`` (with ``B'``).
 
 from __future__ import annotations
 
+import bisect
 import functools
 import math
 from abc import ABC, abstractmethod
@@ -34,8 +35,19 @@ from abc import ABC, abstractmethod
 import numpy as np
 
 from .errors import MaterialError, StateOutOfRangeError
-from .quadrature import UNIT_NODES, UNIT_WEIGHTS, panel_edges
+from .quadrature import UNIT_NODES, UNIT_WEIGHTS, panel_edges, points_for, unit_rule
 from .state import State
+
+_CHEB_POINTS = 20
+"""Chebyshev points per panel for the tabulated isentrope function ``F``."""
+
+
+def _clenshaw(coefs: list[float], x: float) -> float:
+    """Chebyshev series ``sum c_k T_k(x)`` at a float ``x`` (Clenshaw recurrence)."""
+    b1 = b2 = 0.0
+    for c in reversed(coefs[1:]):
+        b1, b2 = 2.0 * x * b1 - b2 + c, b1
+    return x * b1 - b2 + coefs[0]
 
 ROOM_TEMPERATURE = 298.15
 """Temperature (K) of the unstressed reference state."""
@@ -72,7 +84,7 @@ class Material(ABC):
     rho0: float
     spall_strength: float = math.inf
 
-    @property
+    @functools.cached_property
     def v0(self) -> float:
         """Reference specific volume (m^3/kg)."""
         return 1.0 / self.rho0
@@ -126,8 +138,12 @@ class Material(ABC):
         """``(sigma, e)`` on the isentrope through ``through`` at volume ``v``."""
 
     @abstractmethod
-    def riemann_integral(self, through: State, v: float) -> float:
+    def riemann_integral(self, through: State, v: float, start: float | None = None) -> float:
         """``J = integral from through.v to v of rho0 C_L dv'`` along the isentrope (m/s).
+
+        With ``start`` the integral runs from ``start`` instead of ``through.v`` (the
+        isentrope is still the one through ``through``): wave curves extend a known
+        integral by a short piece.
 
         This is the Riemann-invariant integral: along a right-going simple wave
         ``u - u_through = -J`` (and ``+J`` for a left-going one), because
@@ -174,6 +190,9 @@ class AffineEnergyMaterial(Material):
     """Width of the quadrature panels, as a fraction of ``v0``.  The integrands'
     nearest singularities (the ``1/s`` pole, the spinodal) lie at least ~0.4 v0
     away, so 20-point Gauss–Legendre on such panels is exact to rounding."""
+
+    _SINGULARITY_FRACTION = 0.4
+    """Distance of the integrands' nearest singularity, as a fraction of ``v0`` (see above)."""
 
     @abstractmethod
     def _a(self, v):
@@ -228,9 +247,24 @@ class AffineEnergyMaterial(Material):
 
     # --- isentrope (constant B) -----------------------------------------------
     def _energy_factor(self, v):
-        return np.exp(float(self._b(self.v0)) * (np.asarray(v, dtype=float) - self.v0))
+        """``E(v) = exp(B (v - v0))`` (floats or arrays)."""
+        if isinstance(v, float):
+            return math.exp(self._b_ref * (v - self.v0))
+        return np.exp(self._b_ref * (np.asarray(v, dtype=float) - self.v0))
 
-    def _f_table(self) -> tuple[np.ndarray, np.ndarray]:
+    @functools.cached_property
+    def _b_ref(self) -> float:
+        return float(self._b(self.v0))
+
+    def _f_table(self) -> tuple[list, np.ndarray, list]:
+        """Panel edges and per-panel Chebyshev coefficients of ``F`` (built once).
+
+        On each panel ``F`` is sampled at Chebyshev points (each sample a
+        Gauss–Legendre integral from the panel start) and represented by its
+        Chebyshev interpolant; ``F`` is analytic over several panel widths, so
+        the interpolant matches the quadrature to rounding and evaluating it is a
+        short Clenshaw recurrence instead of a quadrature.
+        """
         table = self.__dict__.get("_f_table_cache")
         if table is None:
             v_min, v_max = self.volume_range()
@@ -239,10 +273,23 @@ class AffineEnergyMaterial(Material):
             above = np.arange(self.v0, v_max + h, h)
             edges = np.concatenate([below[::-1], above[1:]])
             starts, ends = edges[:-1], edges[1:]
+            # F at the panel starts, accumulated outwards from F(v0) = 0 on both sides
+            # so that F keeps its relative precision near v0, where it is small.
             pieces = self._f_pieces(starts, ends)
-            cumulative = np.concatenate([[0.0], np.cumsum(pieces)])
             origin = len(below) - 1
-            table = (edges, cumulative - cumulative[origin])
+            cumulative = np.zeros(len(edges))
+            cumulative[origin + 1:] = np.cumsum(pieces[origin:])
+            cumulative[:origin] = -np.cumsum(pieces[:origin][::-1])[::-1]
+            x = np.cos(np.pi * (np.arange(_CHEB_POINTS) + 0.5) / _CHEB_POINTS)
+            mid, half = 0.5 * (starts + ends), 0.5 * (ends - starts)
+            samples = mid[:, None] + half[:, None] * x
+            values = cumulative[:-1, None] + self._f_pieces(
+                np.broadcast_to(starts[:, None], samples.shape), samples)
+            k = np.arange(_CHEB_POINTS)
+            theta = np.pi * (k + 0.5) / _CHEB_POINTS
+            coefs = (2.0 / _CHEB_POINTS) * values @ np.cos(np.outer(theta, k))
+            coefs[:, 0] *= 0.5
+            table = (edges.tolist(), coefs, coefs.tolist())
             self.__dict__["_f_table_cache"] = table
         return table
 
@@ -255,10 +302,21 @@ class AffineEnergyMaterial(Material):
 
     def _f(self, v):
         """The material function ``F(v) = int_{v0}^{v} A(w) E(w) dw`` (floats or arrays)."""
-        edges, values = self._f_table()
+        edges, coefs, coef_lists = self._f_table()
+        last = len(edges) - 2
+        if isinstance(v, float):
+            i = min(max(bisect.bisect_right(edges, v) - 1, 0), last)
+            a, b = edges[i], edges[i + 1]
+            return _clenshaw(coef_lists[i], (2.0 * v - a - b) / (b - a))
         v = np.asarray(v, dtype=float)
-        index = np.clip(np.searchsorted(edges, v) - 1, 0, len(edges) - 2)
-        return values[index] + self._f_pieces(edges[index], v)
+        index = np.clip(np.searchsorted(edges, v, side="right") - 1, 0, last)
+        a, b = np.asarray(edges)[index], np.asarray(edges)[index + 1]
+        x = (2.0 * v - a - b) / (b - a)
+        c = coefs[index]
+        b1 = b2 = np.zeros_like(v)
+        for k in range(c.shape[-1] - 1, 0, -1):
+            b1, b2 = 2.0 * x * b1 - b2 + c[..., k], b1
+        return x * b1 - b2 + c[..., 0]
 
     def _isentrope_label(self, through: State) -> float:
         return self._label_cache(through.v, through.e)
@@ -276,18 +334,22 @@ class AffineEnergyMaterial(Material):
         e = float((label - self._f(v)) / self._energy_factor(v))
         return float(self._a(v) + self._b(v) * e), e
 
-    def riemann_integral(self, through: State, v: float) -> float:
+    def riemann_integral(self, through: State, v: float, start: float | None = None) -> float:
         label = self._isentrope_label(through)
         total = 0.0
-        edges = panel_edges(through.v, v, self._PANEL_FRACTION * self.v0)
-        for start, end in zip(edges[:-1], edges[1:], strict=True):
-            nodes = start + (end - start) * UNIT_NODES
+        start = through.v if start is None else start
+        panel = self._PANEL_FRACTION * self.v0
+        edges = (start, v) if abs(v - start) <= panel else panel_edges(start, v, panel)
+        points = points_for(edges[1] - edges[0], self._SINGULARITY_FRACTION * self.v0)
+        unit_nodes, unit_weights = unit_rule(points)
+        for a, b in zip(edges[:-1], edges[1:], strict=True):
+            nodes = a + (b - a) * unit_nodes
             e_nodes = (label - self._f(nodes)) / self._energy_factor(nodes)
             c2 = self.sound_speed_squared(nodes, e_nodes)
             if not np.all(c2 > 0.0):
                 raise StateOutOfRangeError(
                     f"{self.name}: the isentrope leaves the region of real sound speed near "
-                    f"density {1.0 / end:.6g} kg/m3"
+                    f"density {1.0 / b:.6g} kg/m3"
                 )
-            total += (end - start) * float(np.sqrt(c2) @ UNIT_WEIGHTS)
+            total += (b - a) * float(np.sqrt(c2) @ unit_weights)
         return self.rho0 * total

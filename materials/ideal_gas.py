@@ -77,7 +77,15 @@ class IdealGas(AffineEnergyMaterial):
         e = through.e * (through.v / v) ** (self.gamma - 1.0)
         return (self.gamma - 1.0) * e / v, e
 
-    def riemann_integral(self, through: State, v: float) -> float:
-        c_star = self.eulerian_sound_speed(through.v, through.e)
-        c = 0.0 if math.isinf(v) else self.eulerian_sound_speed(v, self.isentrope(through, v)[1])
-        return -2.0 * (c - c_star) / (self.gamma - 1.0)
+    def riemann_integral(self, through: State, v: float, start: float | None = None) -> float:
+        start = through.v if start is None else start
+        return 2.0 * (self._sound_on(through, start) - self._sound_on(through, v)) / (
+            self.gamma - 1.0)
+
+    def _sound_on(self, through: State, v: float) -> float:
+        """Eulerian sound speed (m/s) at volume ``v`` on the isentrope through ``through``."""
+        if math.isinf(v):
+            return 0.0
+        if v == through.v:
+            return self.eulerian_sound_speed(through.v, through.e)
+        return self.eulerian_sound_speed(v, self.isentrope(through, v)[1])

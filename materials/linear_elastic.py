@@ -70,8 +70,8 @@ class LinearElastic(AffineEnergyMaterial):
         sigma = float(self._a(v))
         return sigma, through.e + 0.5 * (through.sigma + sigma) * (through.v - v)
 
-    def riemann_integral(self, through: State, v: float) -> float:
-        return self.rho0 * self.C * (v - through.v)
+    def riemann_integral(self, through: State, v: float, start: float | None = None) -> float:
+        return self.rho0 * self.C * (v - (through.v if start is None else start))
 
 
 def _strength(name: str, value: float) -> float:

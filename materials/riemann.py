@@ -27,6 +27,7 @@ import math
 from dataclasses import dataclass
 
 from .errors import NoSolutionError, StateOutOfRangeError
+from .roots import EPS as _EPS
 from .roots import bracketed_newton
 from .state import LEFT, RIGHT, State
 
@@ -80,6 +81,15 @@ def solve_contact(left_material, left: State, right_material, right: State,
 
     guess = _acoustic_guess(curve_l.impedance, curve_r.impedance, left, right)
     floor = -tensile_strength
+    # phi is a sum of particle velocities: its rounding noise is a few ulps of them.
+    z_min = min(curve_l.impedance, curve_r.impedance)
+    noise = 4.0 * _EPS * (abs(left.u) + abs(right.u)
+                          + (abs(left.sigma) + abs(right.sigma) + abs(guess)) / z_min)
+    local = _local_bracket(phi, guess, floor)
+    if local is not None:
+        lo, hi, start, f_lo, f_hi = local
+        sigma = bracketed_newton(phi, lo, hi, start, f_lo=f_lo, f_hi=f_hi, f_tol=noise)
+        return _bonded(curve_l, curve_r, sigma)
     hi, phi_hi = _upper_bracket(phi, curve_l, curve_r, left, right, guess)
     if phi_hi < 0.0:
         raise NoSolutionError(
@@ -99,7 +109,13 @@ def solve_contact(left_material, left: State, right_material, right: State,
             f"a tension beyond {-lo / 1e9:.6g} GPa, outside their equations of state; give "
             f"the materials a spall strength or make the interface unbonded"
         )
-    sigma = bracketed_newton(phi, lo, hi, guess, f_lo=phi_lo, f_hi=phi_hi)
+    sigma = bracketed_newton(phi, lo, hi, guess, f_lo=phi_lo, f_hi=phi_hi,
+                             f_tol=noise * max(1.0, max(abs(lo), abs(hi)) / max(abs(guess), 1.0)))
+    return _bonded(curve_l, curve_r, sigma)
+
+
+def _bonded(curve_l, curve_r, sigma: float) -> RiemannSolution:
+    """The solution with contact stress ``sigma`` (no separation)."""
     return RiemannSolution(
         left_waves=curve_l.waves(sigma),
         right_waves=curve_r.waves(sigma),
@@ -107,6 +123,43 @@ def solve_contact(left_material, left: State, right_material, right: State,
         right_star=curve_r.state_at(sigma),
         bonded_sigma=sigma,
     )
+
+
+_LOCAL_TRIES = 6
+
+
+def _local_bracket(phi, guess: float, floor: float):
+    """A bracket ``(lo, hi, guess, f_lo, f_hi)`` around the root found near ``guess``.
+
+    The acoustic guess is usually close: one Newton step from it, overshot by
+    half, almost always lands on the other side of the root, so the bracket costs
+    two evaluations near the answer instead of a search over the whole curve.
+    Returns ``None`` (the caller then searches globally) if the guess or a trial
+    leaves a material's range, if the root may lie below ``floor`` (separation),
+    or if no sign change turns up within a few doublings.
+    """
+    try:
+        f0, df0 = phi(guess)
+        if f0 == 0.0:
+            return (guess, guess, guess, 0.0, 0.0) if guess >= floor else None
+        step = -f0 / df0 if df0 > 0.0 and math.isfinite(df0) else None
+        if step is None:
+            return None
+        step *= 1.5
+        for _ in range(_LOCAL_TRIES):
+            trial = guess + step
+            if trial < floor:
+                return None
+            f1 = phi(trial)[0]
+            if (f1 > 0.0) != (f0 > 0.0) or f1 == 0.0:
+                lo, hi, f_lo, f_hi = ((guess, trial, f0, f1) if trial > guess
+                                      else (trial, guess, f1, f0))
+                return lo, hi, guess + step / 1.5, f_lo, f_hi
+            guess, f0 = trial, f1
+            step *= 2.0
+    except (NoSolutionError, StateOutOfRangeError):
+        return None
+    return None
 
 
 def _upper_bracket(phi, curve_l, curve_r, left, right, guess):
@@ -214,7 +267,8 @@ def solve_boundary(material, state: State, boundary_at: str, *, stress: float | 
             )
         z = material.rho0 * material.sound_speed(state.v, state.e)
         guess = state.sigma + z * target
-        sigma = bracketed_newton(residual, lo, hi, guess, f_lo=r_lo, f_hi=r_hi)
+        noise = 4.0 * _EPS * (abs(state.u) + abs(float(velocity)) + abs(guess) / z)
+        sigma = bracketed_newton(residual, lo, hi, guess, f_lo=r_lo, f_hi=r_hi, f_tol=noise)
     star = curve.state_at(sigma)
     waves = curve.waves(sigma)
     if direction == LEFT:

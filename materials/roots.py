@@ -16,6 +16,9 @@ from .errors import NoSolutionError
 
 _MAX_ITERATIONS = 200
 
+EPS = 2.0**-52
+"""Machine epsilon of a float: callers scale their ``f_tol`` noise estimates by it."""
+
 
 def bracketed_newton(
     func: Callable[[float], tuple[float, float]],
@@ -26,12 +29,15 @@ def bracketed_newton(
     abs_tol: float = 0.0,
     f_lo: float | None = None,
     f_hi: float | None = None,
+    f_tol: float = 0.0,
 ) -> float:
     """Root of ``func`` in ``[lo, hi]``; ``func(x)`` returns ``(f, df/dx)``.
 
     ``f(lo)`` and ``f(hi)`` must differ in sign (a zero at an end is accepted).
     Iteration stops when the bracket is narrower than
-    ``rel_tol * |x| + abs_tol`` or ``f`` is exactly zero.
+    ``rel_tol * |x| + abs_tol``, or when ``|f| <= f_tol``: callers whose ``f`` is
+    computed with a known rounding noise pass that noise as ``f_tol``, so that
+    the iteration does not bisect through noise once Newton has converged.
     """
     if lo > hi:
         lo, hi = hi, lo
@@ -52,7 +58,7 @@ def bracketed_newton(
     step_old = hi - lo
     for _ in range(_MAX_ITERATIONS):
         f, df = func(x)
-        if f == 0.0:
+        if abs(f) <= f_tol:
             return x
         if (f > 0.0) == increasing:
             hi = x

@@ -33,6 +33,7 @@ from __future__ import annotations
 import math
 
 from .errors import NoSolutionError, StateOutOfRangeError
+from .roots import EPS as _EPS
 from .roots import bracketed_newton
 from .state import State
 from .waves import Fan, Shock
@@ -47,6 +48,9 @@ class HydrodynamicWaveCurve:
     """Relative volume jump below which a shock's speed is taken from the Hugoniot's
     tangent rather than from the chord of the stored states (see ``waves``)."""
 
+    _MAX_KNOWN_INTEGRALS = 16
+    """Riemann integrals remembered per curve (one root search needs a handful)."""
+
     def __init__(self, material, ahead: State, direction: int, release: str = "isentrope"):
         if direction not in (1, -1):
             raise ValueError(f"direction must be +1 or -1, got {direction!r}")
@@ -59,6 +63,7 @@ class HydrodynamicWaveCurve:
         self._impedance = material.rho0 * material.sound_speed(ahead.v, ahead.e)
         self._sigma_min: float | None = None
         self._last_state: State | None = None
+        self._integrals = [(ahead.v, 0.0)]
 
     @property
     def impedance(self) -> float:
@@ -162,7 +167,8 @@ class HydrodynamicWaveCurve:
         # Acoustic first guess: dv = -(dsigma) / (rho0 C)^2.
         guess = a.v - (sigma - a.sigma) / self._impedance**2
         try:
-            return bracketed_newton(residual, lo, hi, guess, rel_tol=2e-16)
+            noise = 4.0 * _EPS * (abs(sigma) + abs(a.sigma))
+            return bracketed_newton(residual, lo, hi, guess, rel_tol=2e-16, f_tol=noise)
         except (NoSolutionError, StateOutOfRangeError):
             self.check_stress(sigma)  # names the range the stress is outside
             raise
@@ -185,7 +191,22 @@ class HydrodynamicWaveCurve:
             return g, ((a.v - v) - (sigma - a.sigma) / ds_dv) / (2.0 * g)
         c = mat.sound_speed(v, self._energy(sigma, v))
         slope = 1.0 / (mat.rho0 * c) if c > 0.0 else math.inf
-        return -mat.riemann_integral(a, v), slope
+        return -self._riemann_integral(v), slope
+
+    def _riemann_integral(self, v: float) -> float:
+        """``J(v)`` along the isentrope of ``ahead``, extended from the nearest known value.
+
+        A root search evaluates the curve at volumes that converge on the answer;
+        continuing the integral from the closest volume already done makes each
+        later evaluation a short (few-point) quadrature instead of a full one.
+        """
+        if math.isinf(v):
+            return self.material.riemann_integral(self.ahead, v)
+        v_near, j_near = min(self._integrals, key=lambda known: abs(known[0] - v))
+        j = j_near + self.material.riemann_integral(self.ahead, v, start=v_near)
+        if len(self._integrals) < self._MAX_KNOWN_INTEGRALS:
+            self._integrals.append((v, j))
+        return j
 
     def velocity_change(self, sigma: float) -> tuple[float, float]:
         """``(g, dg/dsigma)``: the particle-velocity change ``u - u_a = d * g``."""

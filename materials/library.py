@@ -1,0 +1,196 @@
+"""The material library, and materials built from plain specifications.
+
+``materials/data/library.toml`` holds Mie–Grüneisen solids on linear Us–up fits
+(SI values: ``rho0`` kg/m^3, ``c0`` m/s, ``s`` and ``gamma0`` dimensionless, ``cv``
+J/(kg K), ``spall_strength`` Pa, ``up_max`` m/s) with a description, aliases and
+the source of each number.  ``get(name)`` builds the material of an entry (a
+name is its table key, or any alias, matched without regard to case), and
+``material_from_spec`` builds any model from a dict of SI floats: this is the
+one place where specification fields are mapped to constructor arguments, for
+library entries and for materials defined inline in scene files alike.
+
+Models and fields (``MODELS``):
+
+- ``"mie-gruneisen"``: ``rho0``, ``c0``, ``s``, ``gamma0``; optional ``cv``,
+  ``spall_strength``, ``up_max``.
+- ``"linear-elastic"``: ``rho0`` and one of: ``C`` (longitudinal speed, m/s);
+  ``lambda`` and ``mu`` (Lamé constants, Pa); ``E`` (Young's modulus, Pa) and
+  ``poisson``, converted to ``lambda = E nu / ((1 + nu)(1 - 2 nu))`` and
+  ``mu = E / (2 (1 + nu))``.  Optional ``spall_strength``.
+- ``"ideal-gas"``: ``gamma``, ``rho0``; optional ``cv``.
+
+A solid without ``spall_strength`` never spalls (``math.inf``).  ``description``
+and ``source`` (strings) may accompany any specification and are not used.
+"""
+
+from __future__ import annotations
+
+import difflib
+import functools
+import math
+import tomllib
+from importlib import resources
+from typing import Any
+
+from .base import Material, require_positive
+from .errors import MaterialError
+from .ideal_gas import IdealGas
+from .linear_elastic import LinearElastic
+from .mie_gruneisen import MieGruneisen
+
+MODELS: dict[str, dict[str, tuple[str, ...]]] = {
+    "mie-gruneisen": {"required": ("rho0", "c0", "s", "gamma0"),
+                      "optional": ("cv", "spall_strength", "up_max")},
+    "linear-elastic": {"required": ("rho0",),
+                       "optional": ("C", "lambda", "mu", "E", "poisson", "spall_strength")},
+    "ideal-gas": {"required": ("gamma", "rho0"), "optional": ("cv",)},
+}
+"""Numeric fields of each model (a linear-elastic solid also needs one of its
+stiffness choices, see ``_LINEAR_ELASTIC_CHOICES``)."""
+
+_LINEAR_ELASTIC_CHOICES = (("C",), ("lambda", "mu"), ("E", "poisson"))
+
+FIELD_DIMENSIONS: dict[str, str] = {
+    "rho0": "density", "c0": "velocity", "s": "dimensionless", "gamma0": "dimensionless",
+    "cv": "specific_heat", "spall_strength": "stress", "up_max": "velocity",
+    "C": "velocity", "lambda": "stress", "mu": "stress", "E": "stress",
+    "poisson": "dimensionless", "gamma": "dimensionless",
+}
+"""Physical dimension of every numeric specification field, for readers of files
+that write quantities with units (the dimension names of ``fronttrack.units``)."""
+
+TEXT_FIELDS = ("description", "source")
+"""Descriptive string fields any specification may carry."""
+
+_LIBRARY_ONLY_FIELDS = ("aliases",)
+
+
+# --- the library file ----------------------------------------------------------------
+@functools.cache
+def _library() -> dict[str, dict[str, Any]]:
+    """The parsed library file, ``{name: entry}`` in file order (read once)."""
+    text = resources.files(__package__).joinpath("data/library.toml").read_text("utf-8")
+    return tomllib.loads(text)
+
+
+@functools.cache
+def _lookup() -> dict[str, str]:
+    """Case-folded names and aliases -> library key; a name used twice is a data error."""
+    index: dict[str, str] = {}
+    for key, data in _library().items():
+        for label in (key, *data.get("aliases", ())):
+            folded = label.casefold()
+            if index.get(folded, key) != key:
+                raise MaterialError(f"library.toml: {label!r} names both {index[folded]!r} "
+                                    f"and {key!r}")
+            index[folded] = key
+    return index
+
+
+def available() -> list[str]:
+    """Names (table keys) of the library materials, in the file's order."""
+    return list(_library())
+
+
+def _resolve(name: str) -> str:
+    """Library key of ``name`` (a key or an alias, any case); ``MaterialError`` if unknown."""
+    if not isinstance(name, str):
+        raise MaterialError(f"a material name must be a string, got {name!r}")
+    if name in _library():
+        return name
+    key = _lookup().get(name.casefold())
+    if key is not None:
+        return key
+    close = difflib.get_close_matches(name.casefold(), list(_lookup()), n=5, cutoff=0.6)
+    suggestions = list(dict.fromkeys(_lookup()[label] for label in close))
+    hint = f"; did you mean {', '.join(suggestions)}?" if suggestions else ""
+    raise MaterialError(f"unknown material {name!r}{hint} (available: {', '.join(available())})")
+
+
+def entry(name: str) -> dict[str, Any]:
+    """A copy of the library entry of ``name``: SI values, description, aliases, source."""
+    data = _library()[_resolve(name)]
+    return {key: list(value) if isinstance(value, list) else value
+            for key, value in data.items()}
+
+
+def get(name: str) -> Material:
+    """The library material ``name`` (key or alias, any case); one shared instance per entry.
+
+    Unknown names raise ``MaterialError`` listing close matches and all names.
+    """
+    return _build(_resolve(name))
+
+
+@functools.cache
+def _build(key: str) -> Material:
+    spec = {field: value for field, value in _library()[key].items()
+            if field not in _LIBRARY_ONLY_FIELDS}
+    return material_from_spec(key, spec)
+
+
+# --- specifications -------------------------------------------------------------------
+def material_from_spec(name: str, spec: dict[str, Any]) -> Material:
+    """Build material ``name`` from ``spec``: ``model`` plus that model's fields in SI floats.
+
+    Raises ``MaterialError`` naming the field at fault (unknown model, missing,
+    unknown or non-numeric field) and the allowed set; the constructors then
+    check the values' ranges.
+    """
+    if not isinstance(spec, dict):
+        raise MaterialError(f"{name}: a material specification must be a table, got {spec!r}")
+    model = spec.get("model")
+    if not isinstance(model, str) or model not in MODELS:
+        got = "no model" if model is None else f"model {model!r}"
+        raise MaterialError(f"{name}: model must be one of {', '.join(MODELS)}; got {got}")
+    fields = MODELS[model]
+    allowed = ("model", *fields["required"], *fields["optional"], *TEXT_FIELDS)
+    for field, value in spec.items():
+        if field not in allowed:
+            raise MaterialError(f"{name}: unknown field {field!r} for model {model!r} "
+                                f"(allowed: {', '.join(allowed)})")
+        if field in TEXT_FIELDS and not isinstance(value, str):
+            raise MaterialError(f"{name}: {field} must be a string, got {value!r}")
+    missing = [field for field in fields["required"] if field not in spec]
+    if missing:
+        raise MaterialError(f"{name}: missing field {missing[0]!r} for model {model!r} "
+                            f"(required: {', '.join(fields['required'])})")
+    values = {field: _number(name, field, value) for field, value in spec.items()
+              if field != "model" and field not in TEXT_FIELDS}
+    if model == "mie-gruneisen":
+        return MieGruneisen(name, values["rho0"], values["c0"], values["s"], values["gamma0"],
+                            cv=values.get("cv"),
+                            spall_strength=values.get("spall_strength", math.inf),
+                            up_max=values.get("up_max"))
+    if model == "linear-elastic":
+        return _linear_elastic(name, values)
+    return IdealGas(name, values["gamma"], values["rho0"], cv=values.get("cv"))
+
+
+def _number(name: str, field: str, value: Any) -> float:
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        raise MaterialError(f"{name}: {field} must be a number (SI units), got {value!r}")
+    return float(value)
+
+
+def _linear_elastic(name: str, values: dict[str, float]) -> LinearElastic:
+    """A linear elastic solid from exactly one of the stiffness choices."""
+    given = [choice for choice in _LINEAR_ELASTIC_CHOICES
+             if any(field in values for field in choice)]
+    options = " or ".join(" and ".join(choice) for choice in _LINEAR_ELASTIC_CHOICES)
+    if len(given) != 1 or any(field not in values for field in given[0]):
+        present = [field for choice in given for field in choice if field in values]
+        raise MaterialError(f"{name}: a linear-elastic material needs rho0 and exactly one "
+                            f"of: {options}; got {', '.join(present) or 'none of them'}")
+    strength = values.get("spall_strength", math.inf)
+    if "C" in values:
+        return LinearElastic(name, values["rho0"], values["C"], strength)
+    if "lambda" in values:
+        return LinearElastic.from_lame(name, values["rho0"], values["lambda"], values["mu"],
+                                       strength)
+    youngs, nu = require_positive("E", values["E"], name), values["poisson"]
+    if not -1.0 < nu < 0.5:
+        raise MaterialError(f"{name}: poisson must be in (-1, 0.5), got {nu!r}")
+    lam = youngs * nu / ((1.0 + nu) * (1.0 - 2.0 * nu))
+    return LinearElastic.from_lame(name, values["rho0"], lam, youngs / (2.0 * (1.0 + nu)),
+                                   strength)
