@@ -87,6 +87,7 @@ class Engine:
         length = scene.length
         self.x_tol = 1e-10 * length
         self.t_end = scene.t_end
+        self.initial_states: list[State] = []
 
     # --- set-up -------------------------------------------------------------
     def _new_front(self, kind: str, x0: float, t0: float, **kw) -> Front:
@@ -111,6 +112,7 @@ class Engine:
     def _build(self) -> None:
         scene = self.scene
         states = [initial_state(layer) for layer in scene.layers]
+        self.initial_states = states
         self.stress_scale = self._stress_scale(states)
         self.negligible = (self.acc.negligible_stress if self.acc.negligible_stress is not None
                            else NEGLIGIBLE_FRACTION * self.stress_scale)
@@ -494,6 +496,8 @@ class Engine:
             self.head = items[0]
         layer_left = region_left.layer if region_left is not None else region_right.layer
         layer_right = region_right.layer if region_right is not None else layer_left
+        if middle is not None and middle.region_right is not None:
+            middle.earlier_regions.append((t, middle.region_right.id))
         for k, front in enumerate(items):
             front.left_region = (items[k - 1].region_right.id if k > 0 else
                                  (region_left.id if region_left is not None else None))
@@ -522,6 +526,7 @@ class Engine:
         merged = self._new_region(state, region_left.material, region_left.layer, t,
                                   (x_left, t), (x_right, t))
         before.next, after.prev = after, before
+        before.earlier_regions.append((t, region_left.id))
         before.region_right = merged
         self._push_pair(before, after, t)
 

@@ -69,7 +69,10 @@ class Front:
     by a fan is a chain of segments with one ``wave`` id); ``fan``/``ray_index``
     place a ray in its fan.  For sites: ``bond`` (``"bonded"``/``"unbonded"``),
     ``strength`` (tension it carries, Pa), ``side`` of a boundary, and the
-    gap's ``gap_width`` (Eulerian, m) at ``gap_time``.
+    gap's ``gap_width`` (Eulerian, m) at ``gap_time``.  ``history`` records
+    ``(t, kind)`` changes of a site's kind (an interface that opens into a gap);
+    ``earlier_regions`` records ``(t, region_id)``: the region on the right
+    until ``t``, when two neighbouring regions merged into a new one.
     """
 
     id: int
@@ -98,6 +101,7 @@ class Front:
     gap_time: float = 0.0
     gap_version: int = 0
     history: list = field(default_factory=list)
+    earlier_regions: list = field(default_factory=list)
 
     @property
     def is_site(self) -> bool:

@@ -80,6 +80,7 @@ class Solution:
     stats: dict
     accuracy_report: dict
     min_stress: tuple | None
+    initial_states: list
     _arrays: dict = field(default_factory=dict, repr=False)
 
     @classmethod
@@ -107,21 +108,28 @@ class Solution:
         }
         return cls(scene=engine.scene, fronts=fronts, regions=engine.regions,
                    events=engine.events, spalls=engine.spalls, stats=stats,
-                   accuracy_report=report, min_stress=engine.min_stress)
+                   accuracy_report=report, min_stress=engine.min_stress,
+                   initial_states=engine.initial_states)
 
     # --- geometry -----------------------------------------------------------
     def _front_arrays(self):
+        """Front segments as arrays: one segment per front and per region on its right."""
         if not self._arrays:
-            fr = [f for f in self.fronts if f.t1 is not None and f.t1 >= f.t0]
-            self._arrays = {
-                "x0": np.array([f.x0 for f in fr]),
-                "t0": np.array([f.t0 for f in fr]),
-                "t1": np.array([f.t1 for f in fr]),
-                "speed": np.array([f.speed for f in fr]),
-                "right": np.array([-1 if f.right_region_id is None else f.right_region_id
-                                   for f in fr]),
-                "kind": [f.kind for f in fr],
-            }
+            x0, t0, t1, speed, right = [], [], [], [], []
+            for f in self.fronts:
+                if f.t1 is None or f.t1 < f.t0:
+                    continue
+                start = f.t0
+                pieces = [*f.earlier_regions, (f.t1, f.right_region_id)]
+                for end, region in pieces:
+                    x0.append(f.position(start))
+                    t0.append(start)
+                    t1.append(end)
+                    speed.append(f.speed)
+                    right.append(-1 if region is None else region)
+                    start = end
+            self._arrays = {"x0": np.array(x0), "t0": np.array(t0), "t1": np.array(t1),
+                            "speed": np.array(speed), "right": np.array(right)}
             self._region_by_id = {r.id: r for r in self.regions}
         return self._arrays
 
@@ -160,21 +168,21 @@ class Solution:
         return np.unique(tc[ok])
 
     def station(self, at) -> float:
-        """Lagrangian position (m) of a probe location (``"left"``, ``"right"`` or metres),
-        nudged just inside the material where it would sit on a boundary."""
-        length = self.scene.length
-        eps = 1e-9 * length
+        """Lagrangian position (m) of a probe location (``"left"``, ``"right"`` or metres)."""
         if at == "left":
-            return eps
+            return 0.0
         if at == "right":
-            return length - eps
-        x = float(at)
-        return min(max(x, eps), length - eps)
+            return self.scene.length
+        return min(max(float(at), 0.0), self.scene.length)
 
     def history(self, at) -> History:
         """Step-function history at a station: ``at`` is ``"left"``, ``"right"`` or X (m)."""
         x = self.station(at)
-        times = [t for t in self.crossing_times(x) if t > 0.0]
+        resolution = 1e-12 * self.scene.t_end
+        times = []
+        for t in self.crossing_times(x):
+            if t > resolution and (not times or t - times[-1] > resolution):
+                times.append(float(t))
         edges = [0.0, *times, self.scene.t_end]
         starts, states = [], []
         for t0, t1 in zip(edges[:-1], edges[1:], strict=True):
@@ -242,16 +250,17 @@ class Solution:
         """
         t = self.scene.t_end if t is None else t
 
-        def totals(time_):
+        def totals(pieces):
             p = e = 0.0
-            for x0, x1, region in self.profile(time_):
-                s, m = region.state, region.material.rho0 * (x1 - x0)
-                p += m * s.u
-                e += m * (s.e + 0.5 * s.u * s.u)
+            for mass, s in pieces:
+                p += mass * s.u
+                e += mass * (s.e + 0.5 * s.u * s.u)
             return p, e
 
-        p0, e0 = totals(0.0)
-        p1, e1 = totals(t)
+        p0, e0 = totals((layer.material.rho0 * layer.thickness, state)
+                        for layer, state in zip(self.scene.layers, self.initial_states,
+                                                strict=True))
+        p1, e1 = totals((r.material.rho0 * (x1 - x0), r.state) for x0, x1, r in self.profile(t))
         left, right = self.history("left"), self.history("right")
         impulse = left.integral(left.sigma, t) - right.integral(right.sigma, t)
         work = (left.integral(left.sigma * left.u, t)
@@ -290,6 +299,7 @@ class Solution:
             "fan": f.fan, "ray_index": f.ray_index, "ray_count": f.ray_count,
             "bond": f.bond or None, "left_region": f.left_region,
             "right_region": f.right_region_id, "kind_history": f.history,
+            "earlier_right_regions": f.earlier_regions,
         } for f in self.fronts]
         events = [{"t": e.t, "x": e.x, "kind": e.kind, "incoming": e.incoming,
                    "outgoing": e.outgoing, "site": e.site} for e in self.events]

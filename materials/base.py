@@ -41,6 +41,9 @@ from .state import State
 _CHEB_POINTS = 20
 """Chebyshev points per panel for the tabulated isentrope function ``F``."""
 
+_SCALAR_RULE_POINTS = 8
+"""Quadrature rules up to this many points are evaluated with floats, not arrays."""
+
 
 def _clenshaw(coefs: list[float], x: float) -> float:
     """Chebyshev series ``sum c_k T_k(x)`` at a float ``x`` (Clenshaw recurrence)."""
@@ -343,13 +346,21 @@ class AffineEnergyMaterial(Material):
         points = points_for(edges[1] - edges[0], self._SINGULARITY_FRACTION * self.v0)
         unit_nodes, unit_weights = unit_rule(points)
         for a, b in zip(edges[:-1], edges[1:], strict=True):
-            nodes = a + (b - a) * unit_nodes
-            e_nodes = (label - self._f(nodes)) / self._energy_factor(nodes)
-            c2 = self.sound_speed_squared(nodes, e_nodes)
-            if not np.all(c2 > 0.0):
+            if points <= _SCALAR_RULE_POINTS:
+                # a short piece: a few float evaluations beat numpy's per-call overhead
+                c2 = []
+                for node in (a + (b - a) * unit_nodes).tolist():
+                    e_node = (label - self._f(node)) / self._energy_factor(node)
+                    c2.append(self.sound_speed_squared(node, e_node))
+            else:
+                nodes = a + (b - a) * unit_nodes
+                e_nodes = (label - self._f(nodes)) / self._energy_factor(nodes)
+                c2 = self.sound_speed_squared(nodes, e_nodes).tolist()
+            if not min(c2) > 0.0:
                 raise StateOutOfRangeError(
                     f"{self.name}: the isentrope leaves the region of real sound speed near "
                     f"density {1.0 / b:.6g} kg/m3"
                 )
-            total += (b - a) * float(np.sqrt(c2) @ unit_weights)
+            total += (b - a) * math.fsum(w * math.sqrt(c) for w, c in zip(
+                unit_weights.tolist(), c2, strict=True))
         return self.rho0 * total
