@@ -138,6 +138,8 @@ def _local_bracket(phi, guess: float, floor: float):
     leaves a material's range, if the root may lie below ``floor`` (separation),
     or if no sign change turns up within a few doublings.
     """
+    if guess < floor:
+        return None
     try:
         f0, df0 = phi(guess)
         if f0 == 0.0:
