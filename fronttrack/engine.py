@@ -45,7 +45,7 @@ multi-layer stack multiply at every crossing of an interface; those weaker than
 a millionth of the peak are dropped (their total is reported) unless the scene
 asks for a smaller ``accuracy.negligible_stress``."""
 
-ENTROPY_JUMP_TOLERANCE = 1e-9
+ENTROPY_JUMP_TOLERANCE = 1e-12
 """Entropy contacts whose relative volume jump is below this are rounding, never tracked.
 Larger ones are tracked unless they would reflect less than the negligible stress."""
 
@@ -56,6 +56,8 @@ class EventLimitError(RuntimeError):
 
 def initial_state(layer) -> State:
     """A layer's initial state: its stress reached along its wave curve, moving at ``velocity``."""
+    if layer.initial is not None:
+        return layer.initial
     material = layer.material
     reference = material.reference_state()
     if layer.stress != 0.0:

@@ -13,7 +13,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
-from materials import Material
+from materials import Material, MaterialError, State, StateOutOfRangeError
 
 BOUNDARY_KINDS = ("free", "wall", "velocity", "stress")
 BONDS = ("bonded", "unbonded")
@@ -32,7 +32,10 @@ class Layer:
     tension up to the weaker material's spall strength) or ``"unbonded"`` (opens
     a gap under any tension).  An initial stress is reached from the reference
     state along the material's wave curve (a shock if compressive, the
-    isentrope if tensile).
+    isentrope if tensile).  ``initial``, if given, is the exact initial state
+    (``State`` with stress, velocity, volume and energy) and replaces
+    ``velocity`` and ``stress``: a gas at a given density and pressure, or a
+    layer already shocked.
     """
 
     material: Material
@@ -41,6 +44,7 @@ class Layer:
     stress: float = 0.0
     bond: str = "bonded"
     name: str = ""
+    initial: State | None = None
 
 
 @dataclass(frozen=True)
@@ -138,6 +142,8 @@ class Scene:
             _finite_positive(f"{where}.thickness", layer.thickness, "m")
             _finite(f"{where}.velocity", layer.velocity, "m/s")
             _finite(f"{where}.stress", layer.stress, "Pa")
+            if layer.initial is not None:
+                _check_initial_state(where, layer)
             if layer.bond not in BONDS:
                 raise SceneError(f"{where}.bond: must be one of {BONDS}, got {layer.bond!r}")
         for side, boundary in (("left", self.left), ("right", self.right)):
@@ -195,3 +201,20 @@ def _finite_positive(name: str, value, unit: str) -> None:
     _finite(name, value, unit)
     if not value > 0.0:
         raise SceneError(f"{name}: must be > 0 {unit}, got {value!r}")
+
+
+def _check_initial_state(where: str, layer: Layer) -> None:
+    """An explicit initial state must be finite, inside the EOS and self-consistent."""
+    state, material = layer.initial, layer.material
+    if not isinstance(state, State):
+        raise SceneError(f"{where}.initial: expected a State, got {state!r}")
+    for name in ("sigma", "u", "v", "e"):
+        _finite(f"{where}.initial.{name}", getattr(state, name), "SI")
+    try:
+        material.check_volume(state.v)
+    except (MaterialError, StateOutOfRangeError) as error:
+        raise SceneError(f"{where}.initial.v: {error}") from None
+    sigma = material.stress(state.v, state.e)
+    if abs(sigma - state.sigma) > 1e-12 * max(abs(sigma), abs(state.sigma), 1.0):
+        raise SceneError(f"{where}.initial.sigma: {state.sigma!r} Pa differs from the "
+                         f"equation of state's {sigma!r} Pa at that volume and energy")

@@ -23,6 +23,7 @@ contact separates into two free surfaces; each side then unloads to
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from dataclasses import dataclass
 
@@ -57,6 +58,9 @@ class RiemannSolution:
 
 
 def _acoustic_guess(z_left, z_right, left: State, right: State) -> float:
+    """Contact stress if both waves were acoustic with the ahead states' impedances."""
+    if not z_left + z_right > 0.0:
+        return max(left.sigma, right.sigma)  # cold gases: no acoustic estimate
     return (z_right * left.sigma + z_left * right.sigma
             + z_left * z_right * (left.u - right.u)) / (z_left + z_right)
 
@@ -83,8 +87,9 @@ def solve_contact(left_material, left: State, right_material, right: State,
     floor = -tensile_strength
     # phi is a sum of particle velocities: its rounding noise is a few ulps of them.
     z_min = min(curve_l.impedance, curve_r.impedance)
+    stress_scale = abs(left.sigma) + abs(right.sigma) + abs(guess)
     noise = 4.0 * _EPS * (abs(left.u) + abs(right.u)
-                          + (abs(left.sigma) + abs(right.sigma) + abs(guess)) / z_min)
+                          + (stress_scale / z_min if z_min > 0.0 else abs(du)))
     local = _local_bracket(phi, guess, floor)
     if local is not None:
         lo, hi, start, f_lo, f_hi = local
@@ -272,6 +277,9 @@ def solve_boundary(material, state: State, boundary_at: str, *, stress: float | 
         noise = 4.0 * _EPS * (abs(state.u) + abs(float(velocity)) + abs(guess) / z)
         sigma = bracketed_newton(residual, lo, hi, guess, f_lo=r_lo, f_hi=r_hi, f_tol=noise)
     star = curve.state_at(sigma)
+    if velocity is not None:
+        # the prescribed velocity holds exactly (a wall is at rest, not at 1e-14 m/s)
+        star = dataclasses.replace(star, u=float(velocity))
     waves = curve.waves(sigma)
     if direction == LEFT:
         return RiemannSolution(waves, (), star, None, bonded_sigma=sigma)

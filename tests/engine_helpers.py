@@ -1,0 +1,71 @@
+"""Checks shared by the engine tests: jump conditions on every front, continuity
+across every contact, no NaN anywhere."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+
+def region_map(solution):
+    return {r.id: r for r in solution.regions}
+
+
+def assert_no_nan(solution):
+    for r in solution.regions:
+        s = r.state
+        for value in (s.sigma, s.u, s.e):
+            assert math.isfinite(value), (r.id, s)
+        assert s.v > 0.0
+
+
+def assert_shock_jumps(solution, rel=1e-12):
+    """Mass and momentum jumps across every shock front, relative to the scene's stress scale.
+
+    Lagrangian jump conditions (compression-positive stress):
+    ``U (v_b - v_a) = -v0 (u_b - u_a)`` and ``rho0 U (u_b - u_a) = sigma_b - sigma_a``.
+    """
+    regions = region_map(solution)
+    scale = solution.accuracy_report["stress_scale"]
+    checked = 0
+    for f in solution.fronts:
+        if f.kind != "shock" or f.left_region is None or f.right_region_id is None:
+            continue
+        left, right = regions[f.left_region], regions[f.right_region_id]
+        a, b = (right.state, left.state) if f.direction > 0 else (left.state, right.state)
+        m = left.material
+        momentum = m.rho0 * f.speed * (b.u - a.u) - (b.sigma - a.sigma)
+        assert abs(momentum) <= rel * scale, (f.id, momentum)
+        mass = f.speed * (b.v - a.v) + m.v0 * (b.u - a.u)
+        assert abs(mass) <= rel * scale / (m.rho0 * abs(f.speed)), (f.id, mass)
+        checked += 1
+    return checked
+
+
+def assert_contacts_continuous(solution, rel=1e-12):
+    """sigma and u equal on both sides of every closed interface and entropy contact."""
+    scale = solution.accuracy_report["stress_scale"]
+    times = sorted({e.t for e in solution.events} | {solution.scene.t_end})
+    delta = 1e-9 * solution.scene.length
+    u_scale = max(abs(r.state.u) for r in solution.regions) or 1.0
+    checked = 0
+    for t0, t1 in zip(times[:-1], times[1:], strict=True):
+        if t1 - t0 < 1e-9 * solution.scene.t_end:
+            continue
+        t = 0.5 * (t0 + t1)
+        for f in solution.fronts:
+            if f.kind not in ("interface", "contact") or not (f.t0 <= t <= (f.t1 or 0.0)):
+                continue
+            if any(kind == "gap" and when <= t for when, kind in f.history):
+                continue
+            x = f.x0
+            left, right = solution.state_at(x - delta, t), solution.state_at(x + delta, t)
+            assert abs(left.sigma - right.sigma) <= rel * scale, (f.id, t, left, right)
+            assert abs(left.u - right.u) <= rel * u_scale, (f.id, t, left, right)
+            checked += 1
+    return checked
+
+
+def region_states(solution, layer):
+    return np.array([[r.state.sigma, r.state.u] for r in solution.regions if r.layer == layer])
