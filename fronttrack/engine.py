@@ -291,7 +291,9 @@ class Engine:
         region_right = group[-1].region_right
         incoming = [f for f in group if not f.is_site]
         if site is not None and site.kind == "gap":
-            site.gap_width += (region_right.state.u - region_left.state.u) * (t - site.gap_time)
+            # the faces moved with the states next to them since the last update
+            opening = site.region_right.state.u - site.prev.region_right.state.u
+            site.gap_width += opening * (t - site.gap_time)
             site.gap_time = t
         kind, solution, new_site = self._solve(site, region_left, region_right, t, x, incoming,
                                                timer)

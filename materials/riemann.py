@@ -57,6 +57,10 @@ class RiemannSolution:
         return [*self.left_waves, *reversed(self.right_waves)]
 
 
+STRENGTH_TOLERANCE = 1e-12
+"""Relative margin within which a tension counts as having reached the strength."""
+
+
 def _acoustic_guess(z_left, z_right, left: State, right: State) -> float:
     """Contact stress if both waves were acoustic with the ahead states' impedances."""
     if not z_left + z_right > 0.0:
@@ -84,7 +88,9 @@ def solve_contact(left_material, left: State, right_material, right: State,
         return g_l + g_r + du, dg_l + dg_r
 
     guess = _acoustic_guess(curve_l.impedance, curve_r.impedance, left, right)
-    floor = -tensile_strength
+    # Tension *reaching* the strength separates: equality is decided within the
+    # rounding of a computed stress (1e-12 relative), never by the last bits.
+    floor = -tensile_strength * (1.0 - STRENGTH_TOLERANCE)
     # phi is a sum of particle velocities: its rounding noise is a few ulps of them.
     z_min = min(curve_l.impedance, curve_r.impedance)
     stress_scale = abs(left.sigma) + abs(right.sigma) + abs(guess)

@@ -13,6 +13,9 @@ def region_map(solution):
 
 
 def assert_no_nan(solution):
+    """Every state finite, and the event log in time order (the queue never steps back)."""
+    times = [e.t for e in solution.events]
+    assert all(b >= a for a, b in zip(times[:-1], times[1:], strict=True))
     for r in solution.regions:
         s = r.state
         for value in (s.sigma, s.u, s.e):
@@ -25,9 +28,13 @@ def assert_shock_jumps(solution, rel=1e-12):
 
     Lagrangian jump conditions (compression-positive stress):
     ``U (v_b - v_a) = -v0 (u_b - u_a)`` and ``rho0 U (u_b - u_a) = sigma_b - sigma_a``.
+    A wave weaker than the negligible stress may have been dropped beside a shock, so
+    the states around it can differ from its own by up to that much.
     """
     regions = region_map(solution)
-    scale = solution.accuracy_report["stress_scale"]
+    report = solution.accuracy_report
+    scale = rel * report["stress_scale"] + report["negligible_stress"]
+    rel = 1.0
     checked = 0
     for f in solution.fronts:
         if f.kind != "shock" or f.left_region is None or f.right_region_id is None:
@@ -45,7 +52,9 @@ def assert_shock_jumps(solution, rel=1e-12):
 
 def assert_contacts_continuous(solution, rel=1e-12):
     """sigma and u equal on both sides of every closed interface and entropy contact."""
-    scale = solution.accuracy_report["stress_scale"]
+    report = solution.accuracy_report
+    scale = rel * report["stress_scale"] + report["negligible_stress"]
+    rel = 1.0
     times = sorted({e.t for e in solution.events} | {solution.scene.t_end})
     delta = 1e-9 * solution.scene.length
     u_scale = max(abs(r.state.u) for r in solution.regions) or 1.0
@@ -62,10 +71,18 @@ def assert_contacts_continuous(solution, rel=1e-12):
             x = f.x0
             left, right = solution.state_at(x - delta, t), solution.state_at(x + delta, t)
             assert abs(left.sigma - right.sigma) <= rel * scale, (f.id, t, left, right)
-            assert abs(left.u - right.u) <= rel * u_scale, (f.id, t, left, right)
+            assert abs(left.u - right.u) <= 1e-12 * u_scale + scale / (
+                left_z(solution)), (f.id, t, left, right)
             checked += 1
     return checked
 
 
 def region_states(solution, layer):
     return np.array([[r.state.sigma, r.state.u] for r in solution.regions if r.layer == layer])
+
+
+def left_z(solution):
+    """Smallest reference impedance in the scene (kg/m^2/s): converts stress tolerances to u."""
+    return min(layer.material.rho0 * layer.material.sound_speed(state.v, state.e)
+               for layer, state in zip(solution.scene.layers, solution.initial_states,
+                                       strict=True))

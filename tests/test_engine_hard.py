@@ -1,0 +1,182 @@
+"""Hard cases: simultaneous events, near-parallel fronts, long reverberations, extreme
+impedance mismatch, tension at interfaces, spall at exactly the strength, gaps that open
+and close, bad input.  Each must finish with no exception, no NaN, exact jumps and
+continuous sigma and u across every closed contact."""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+from engine_helpers import assert_contacts_continuous, assert_no_nan, assert_shock_jumps
+
+from fronttrack.engine import EventLimitError, run
+from fronttrack.scene import Accuracy, Boundary, Layer, Probe, Scene, SceneError
+from materials import LinearElastic, MieGruneisen
+
+EXACT = Accuracy(release="hugoniot", negligible_stress=0.0)
+
+
+def copper(strength=math.inf):
+    return MieGruneisen("Cu", 8930.0, 3940.0, 1.489, 1.99, spall_strength=strength)
+
+
+def test_three_fronts_meet_at_one_point():
+    """Two flyers strike a bonded pair of plates from both sides at once: the two shocks
+    reach the central interface together, one event with three fronts, symmetric result."""
+    cu = copper()
+    d, v = 1e-3, 500.0
+    scene = Scene(layers=(Layer(cu, d, v), Layer(cu, d, bond="unbonded"), Layer(cu, d),
+                          Layer(cu, d, -v, bond="unbonded")), t_end=0.5e-6, accuracy=EXACT)
+    sol = run(scene)
+    central = [e for e in sol.events if abs(e.x - 2 * d) < 1e-12 and e.t > 0.0]
+    assert central and len(central[0].incoming) == 2 and central[0].site is not None
+    after = central[0].t * 1.05
+    left, right = sol.state_at(2 * d - 1e-5, after), sol.state_at(2 * d + 1e-5, after)
+    assert left.u == pytest.approx(0.0, abs=1e-12 * v)
+    assert right.u == pytest.approx(0.0, abs=1e-12 * v)
+    assert left.sigma == pytest.approx(right.sigma, rel=1e-12)
+    # the reshock states mirror each other about the centre
+    for x in (0.3e-3, 0.7e-3, 1.2e-3):
+        a, b = sol.state_at(2 * d - x, 0.45e-6), sol.state_at(2 * d + x, 0.45e-6)
+        assert a.sigma == pytest.approx(b.sigma, rel=1e-12, abs=1e-3)
+        assert a.u == pytest.approx(-b.u, rel=1e-12, abs=1e-12 * v)
+    assert_shock_jumps(sol)
+    assert_contacts_continuous(sol)
+
+
+def test_near_parallel_shocks_overtake_far_away():
+    """A stress boundary steps from 1 GPa to 1.0001 GPa: the second shock is faster by
+    ~1e-4 of the first's speed and overtakes it deep in the sample, exactly."""
+    cu = copper()
+    step = 20e-9
+    scene = Scene(layers=(Layer(cu, 0.5,),), t_end=60e-6,
+                  left=Boundary("stress", ((0.0, 1e9), (step, 1e9), (2 * step, 1.0001e9))),
+                  accuracy=Accuracy(release="hugoniot", negligible_stress=0.0))
+    sol = run(scene)
+    overtakes = [e for e in sol.events if e.kind == "overtake"]
+    assert len(overtakes) >= 1
+    assert_shock_jumps(sol)
+    assert_no_nan(sol)
+
+
+def test_thousand_reverberations_ring_up():
+    """A 0.1 mm elastic PMMA-like layer between thick elastic sapphire anvils, struck at V:
+    the layer rings up to the anvil-anvil impact state Z_s V / 2 after 1000+ reflections."""
+    sapphire = LinearElastic("sapphire", 3985.0, 11190.0)
+    pmma = LinearElastic("PMMA", 1186.0, 2750.0)
+    v, thin = 100.0, 0.1e-3
+    transit = thin / pmma.C
+    t_end = 1100 * transit
+    anvil = sapphire.C * t_end * 1.01
+    scene = Scene(layers=(Layer(sapphire, anvil, v), Layer(pmma, thin), Layer(sapphire, anvil)),
+                  t_end=t_end, accuracy=Accuracy(negligible_stress=0.0))
+    sol = run(scene)
+    inside = [e for e in sol.events if anvil < e.x < anvil + thin or e.x in (anvil, anvil + thin)]
+    assert len(inside) >= 1000
+    final = sol.state_at(anvil + 0.5 * thin, t_end)
+    # 1100 successive solves, each exact to a few ulps: rounding random-walks to ~1e-12
+    assert final.sigma == pytest.approx(sapphire.impedance * v / 2.0, rel=1e-11)
+    assert final.u == pytest.approx(v / 2.0, rel=1e-11)
+    c = sol.conservation()
+    assert c["momentum_relative_error"] < 1e-12 and c["energy_relative_error"] < 1e-12
+
+
+def test_extreme_impedance_mismatch_tungsten_on_pmma():
+    w = MieGruneisen("W", 19224.0, 4029.0, 1.237, 1.54, spall_strength=3e9)
+    pmma = MieGruneisen("PMMA", 1186.0, 2598.0, 1.516, 0.97, spall_strength=0.2e9)
+    scene = Scene(layers=(Layer(w, 1e-3, 2000.0), Layer(pmma, 5e-3, bond="unbonded")),
+                  t_end=1.2e-6, accuracy=Accuracy(rays_per_fan=8))
+    sol = run(scene)
+    assert_no_nan(sol)
+    assert_shock_jumps(sol)
+    assert_contacts_continuous(sol)
+    # W barely slows: the impact state sits near the PMMA Hugoniot at u ~ V
+    first = sol.state_at(1.0e-3 + 1e-6, 1e-9)
+    assert 0.8 * 2000.0 < first.u < 2000.0
+
+
+def test_unbonded_interface_under_tension_opens_a_gap():
+    """A fast thin flyer on a slow thick plate: the flyer's release pulls the unbonded
+    interface into tension; it opens, and the flyer then flies off slower than the target."""
+    al = MieGruneisen("Al", 2703.0, 5350.0, 1.34, 2.0)
+    cu = copper()
+    scene = Scene(layers=(Layer(al, 1e-3, 600.0), Layer(cu, 8e-3, bond="unbonded")),
+                  t_end=1.5e-6, accuracy=Accuracy(rays_per_fan=8))
+    sol = run(scene)
+    opens = [e for e in sol.events if e.kind == "gap-open"]
+    assert opens
+    t_open = opens[0].t
+    flyer = sol.state_at(0.5e-3, sol.scene.t_end)
+    target_face = sol.state_at(1e-3 + 1e-7, sol.scene.t_end)
+    assert flyer.u < target_face.u or target_face.sigma != 0.0
+    assert sol.eulerian_position(1e-3 + 1e-12, 1.5e-6) >= sol.eulerian_position(1e-3 - 1e-12,
+                                                                              1.5e-6) - 1e-15
+    assert t_open > 0.0
+    assert_no_nan(sol)
+
+
+@pytest.mark.parametrize("factor, spalls", [(1.0 - 1e-9, True), (1.0, True),
+                                            (1.0 + 1e-9, False)])
+def test_tension_exactly_at_the_spall_strength(factor, spalls):
+    """Identical elastic plates, flyer d, target 2d: the releases meet at the target's middle
+    with tension exactly Z V / 2.  A strength below or equal to it (within the 1e-12
+    rounding margin of a computed stress) spalls there; a strength just above it holds."""
+    z_probe = LinearElastic("M", 7870.0, 5900.0)
+    tension = z_probe.impedance * 200.0 / 2.0
+    m = LinearElastic("M", 7870.0, 5900.0, spall_strength=tension * factor)
+    d = 1e-3
+    scene = Scene(layers=(Layer(m, d, 200.0), Layer(m, 2 * d, bond="unbonded")),
+                  t_end=4 * d / m.C, accuracy=Accuracy(negligible_stress=0.0))
+    sol = run(scene)
+    assert bool(sol.spalls) is spalls
+    if spalls:
+        assert sol.spalls[0].x == pytest.approx(2 * d, rel=1e-12)
+        assert sol.spalls[0].t == pytest.approx(3 * d / m.C, rel=1e-12)
+    else:
+        assert sol.max_tension()["sigma"] == pytest.approx(-tension, rel=1e-12)
+
+
+def test_gap_opens_and_closes():
+    """A plate leaves its neighbour at 20 m/s (a gap opens at once); a 1 GPa stress on its
+    far face turns it round and it strikes the neighbour again when the Eulerian positions
+    of the two faces meet."""
+    cu = copper()
+    d = 2e-3
+    scene = Scene(layers=(Layer(cu, d), Layer(cu, d, 20.0, bond="unbonded")), t_end=5e-6,
+                  right=Boundary("stress", ((0.0, 1e9),)),
+                  accuracy=Accuracy(release="hugoniot"))
+    sol = run(scene)
+    kinds = [e.kind for e in sol.events]
+    assert "gap-open" in kinds and "gap-close" in kinds
+    close = next(e for e in sol.events if e.kind == "gap-close")
+    left_face = sol.eulerian_position(d * (1 - 1e-12), close.t)
+    right_face = sol.eulerian_position(d * (1 + 1e-12), close.t)
+    # the two stations sit 2e-12 d apart in X, so their positions differ by that much
+    assert right_face - left_face == pytest.approx(0.0, abs=4e-12 * d)
+    assert_no_nan(sol)
+    assert_shock_jumps(sol)
+
+
+def test_event_limit_names_the_field():
+    cu = copper(1e9)
+    scene = Scene(layers=(Layer(cu, 1e-3, 500.0), Layer(cu, 1e-3)), t_end=5e-6,
+                  accuracy=Accuracy(max_events=5))
+    with pytest.raises(EventLimitError, match="accuracy.max_events"):
+        run(scene)
+
+
+@pytest.mark.parametrize("layers, field", [
+    (lambda m: (Layer(m, -1e-3),), "layer[0].thickness"),
+    (lambda m: (Layer(m, 1e-3, float("nan")),), "layer[0].velocity"),
+    (lambda m: (Layer(m, 1e-3), Layer(m, 1e-3, bond="glued")), "layer[1].bond"),
+    (lambda m: (), "layer"),
+])
+def test_bad_scenes_name_the_field(layers, field):
+    with pytest.raises(SceneError, match=field.replace("[", r"\[").replace("]", r"\]")):
+        run(Scene(layers=layers(copper()), t_end=1e-6))
+
+
+def test_bad_probe_position_names_the_range():
+    with pytest.raises(SceneError, match="outside the stack"):
+        run(Scene(layers=(Layer(copper(), 1e-3),), t_end=1e-6, probes=(Probe("p", 2e-3),)))
