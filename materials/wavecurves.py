@@ -66,6 +66,11 @@ class HydrodynamicWaveCurve:
         self._integrals = [(ahead.v, 0.0)]
 
     @property
+    def _compliance(self) -> float:
+        """``1 / (rho0 C_L)`` at the centre: the curve's slope dg/dsigma there (inf if C_L = 0)."""
+        return 1.0 / self._impedance if self._impedance > 0.0 else math.inf
+
+    @property
     def impedance(self) -> float:
         """Acoustic impedance ``rho0 C_L`` of the ahead state: the curve's slope at its centre."""
         return self._impedance
@@ -165,7 +170,8 @@ class HydrodynamicWaveCurve:
                 while residual(hi)[0] > 0.0:
                     hi *= 4.0
         # Acoustic first guess: dv = -(dsigma) / (rho0 C)^2.
-        guess = a.v - (sigma - a.sigma) / self._impedance**2
+        guess = (a.v - (sigma - a.sigma) / self._impedance**2 if self._impedance > 0.0
+                 else None)
         try:
             noise = 4.0 * _EPS * (abs(sigma) + abs(a.sigma))
             return bracketed_newton(residual, lo, hi, guess, rel_tol=2e-16, f_tol=noise)
@@ -186,7 +192,7 @@ class HydrodynamicWaveCurve:
             jump = (sigma - a.sigma) * (a.v - v)
             g = math.copysign(math.sqrt(max(jump, 0.0)), sigma - a.sigma)
             if g == 0.0:
-                return 0.0, 1.0 / self._impedance
+                return 0.0, self._compliance
             ds_dv = mat.hugoniot(a, v)[2]
             return g, ((a.v - v) - (sigma - a.sigma) / ds_dv) / (2.0 * g)
         c = mat.sound_speed(v, self._energy(sigma, v))
@@ -211,7 +217,7 @@ class HydrodynamicWaveCurve:
     def velocity_change(self, sigma: float) -> tuple[float, float]:
         """``(g, dg/dsigma)``: the particle-velocity change ``u - u_a = d * g``."""
         if sigma == self.ahead.sigma:
-            return 0.0, 1.0 / self._impedance
+            return 0.0, self._compliance
         return self._g_at(sigma, self._volume(sigma))
 
     def state_at(self, sigma: float) -> State:

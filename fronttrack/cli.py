@@ -1,0 +1,182 @@
+"""The ``wavediagram`` command line.
+
+    wavediagram demo [-o DIR]                 built-in plate-impact scene -> annotated figures
+    wavediagram run SCENE.toml [-o DIR] [--json FILE] [--no-figures]
+    wavediagram match FLYER VELOCITY LAYER... [--json FILE] [--mirrored] [--release PATH]
+    wavediagram materials
+
+Bad input (a malformed scene, an unknown material, a quantity without units, a
+state outside an equation of state) is reported on one line naming the field,
+with exit status 2.  Quantities on the command line carry units ("1000 m/s").
+"""
+
+from __future__ import annotations
+
+import argparse
+import csv
+import json
+import sys
+from importlib import resources
+from pathlib import Path
+
+from materials import MaterialError, NoSolutionError, StateOutOfRangeError
+from materials import library
+
+from .engine import EventLimitError, run
+from .impedance_match import format_table, impedance_match, to_json_dict
+from .scene import SceneError
+from .scene_file import load_scene
+from .units import parse_quantity
+
+USER_ERRORS = (SceneError, MaterialError, StateOutOfRangeError, NoSolutionError,
+               EventLimitError, FileNotFoundError)
+"""Errors that are the input's fault: reported on one line, exit status 2."""
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = _parser()
+    args = parser.parse_args(argv)
+    try:
+        return args.handler(args)
+    except USER_ERRORS as error:
+        print(f"wavediagram: error: {error}", file=sys.stderr)
+        return 2
+
+
+def _parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(
+        prog="wavediagram",
+        description="Exact X-t and stress-particle-velocity diagrams of plane shock waves "
+                    "in solids, by front tracking.")
+    commands = parser.add_subparsers(dest="command", required=True)
+
+    demo = commands.add_parser("demo", help="run the built-in Cu-on-Al plate impact and "
+                                            "write its annotated diagrams")
+    demo.add_argument("-o", "--output", default="wavediagram-demo", type=Path,
+                      help="output directory (default: %(default)s)")
+    demo.set_defaults(handler=_demo)
+
+    run_ = commands.add_parser("run", help="run a TOML scene")
+    run_.add_argument("scene", type=Path, help="scene file (TOML, quantities with units)")
+    run_.add_argument("-o", "--output", type=Path, default=None,
+                      help="directory for figures, solution.json and probe CSVs")
+    run_.add_argument("--json", type=Path, default=None, help="write the solution JSON here")
+    run_.add_argument("--no-figures", action="store_true", help="skip the figures")
+    run_.add_argument("--quiet", action="store_true", help="no progress or summary output")
+    run_.set_defaults(handler=_run)
+
+    match = commands.add_parser("match", help="impedance match a flyer onto a stack")
+    match.add_argument("flyer", help="flyer material (library name)")
+    match.add_argument("velocity", help='impact velocity with units, e.g. "1000 m/s"')
+    match.add_argument("layers", nargs="+", help="target layers, first struck first")
+    match.add_argument("--json", type=Path, default=None, help="write the states as JSON")
+    match.add_argument("--release", choices=("isentrope", "hugoniot"), default="isentrope",
+                       help="release path where a wave unloads (default: %(default)s)")
+    match.add_argument("--mirrored", action="store_true",
+                       help="use the mirrored-Hugoniot shortcut for reflected waves "
+                            "(labelled as such)")
+    match.set_defaults(handler=_match)
+
+    mats = commands.add_parser("materials", help="list the material library with sources")
+    mats.set_defaults(handler=_materials)
+    return parser
+
+
+# --- commands ---------------------------------------------------------------------
+def _demo(args) -> int:
+    source = resources.files("fronttrack").joinpath("scenes", "demo.toml")
+    with resources.as_file(source) as path:
+        scene = load_scene(path)
+    solution = _solve(scene, quiet=False)
+    written = _write_outputs(solution, args.output, json_path=None, figures=True)
+    print(f"wrote {len(written)} files to {args.output}/ "
+          f"(start with {args.output / 'xt_su.png'})")
+    return 0
+
+
+def _run(args) -> int:
+    scene = load_scene(args.scene)
+    solution = _solve(scene, quiet=args.quiet)
+    written = _write_outputs(solution, args.output, json_path=args.json,
+                             figures=not args.no_figures)
+    if not args.quiet:
+        for path in written:
+            print(f"wrote {path}")
+    return 0
+
+
+def _match(args) -> int:
+    flyer = library.get(args.flyer)
+    velocity = parse_quantity(args.velocity, "velocity", "velocity")
+    stack = [library.get(name) for name in args.layers]
+    rows = impedance_match(flyer, velocity, stack, release=args.release, mirrored=args.mirrored)
+    print(format_table(rows))
+    if args.json is not None:
+        args.json.write_text(json.dumps(to_json_dict(rows), indent=2))
+        print(f"wrote {args.json}")
+    return 0
+
+
+def _materials(args) -> int:
+    print(f"{'name':<12} {'rho0 kg/m3':>10} {'c0 m/s':>8} {'s':>6} {'Gamma0':>6} "
+          f"{'spall GPa':>9}  source")
+    for name in library.available():
+        e = library.entry(name)
+        spall = e.get("spall_strength")
+        spall_text = f"{spall / 1e9:9.2f}" if spall is not None else f"{'-':>9}"
+        print(f"{name:<12} {e['rho0']:>10.0f} {e['c0']:>8.0f} {e['s']:>6.3f} "
+              f"{e['gamma0']:>6.2f} {spall_text}  {e.get('source', '')}")
+    return 0
+
+
+# --- helpers ------------------------------------------------------------------------
+def _solve(scene, quiet: bool):
+    def progress(events: int, t: float) -> None:
+        print(f"\r  {events} events, t = {t * 1e6:.4g} of {scene.t_end * 1e6:.4g} us",
+              end="", file=sys.stderr, flush=True)
+
+    solution = run(scene, progress=None if quiet else progress)
+    if not quiet:
+        stats, report = solution.stats, solution.accuracy_report
+        print(f"\r{scene.title or 'scene'}: {stats['events']} events, {stats['fronts']} fronts, "
+              f"{len(solution.spalls)} spall planes, solved in {stats['solve_time']:.3g} s "
+              f"(release: {report['release']}, {report['dropped_waves']} waves below "
+              f"{report['negligible_stress']:.3g} Pa dropped)", file=sys.stderr)
+    return solution
+
+
+def _write_outputs(solution, outdir: Path | None, json_path: Path | None,
+                   figures: bool) -> list[Path]:
+    written = []
+    if outdir is not None:
+        outdir.mkdir(parents=True, exist_ok=True)
+        json_path = json_path or outdir / "solution.json"
+        written += _write_probe_csvs(solution, outdir)
+        if figures:
+            from .plotting.figures import save_standard_figures
+
+            written += save_standard_figures(solution, outdir)
+    if json_path is not None:
+        json_path.parent.mkdir(parents=True, exist_ok=True)
+        json_path.write_text(json.dumps(solution.to_dict(), indent=1))
+        written.append(json_path)
+    return written
+
+
+def _write_probe_csvs(solution, outdir: Path) -> list[Path]:
+    """One CSV per probe: the step history (each row a step start time and its state)."""
+    written = []
+    for name, history in solution.probe_histories().items():
+        path = outdir / f"probe_{name}.csv"
+        with path.open("w", newline="") as handle:
+            writer = csv.writer(handle)
+            writer.writerow(["t_s", "sigma_Pa", "u_m_per_s", "rho_kg_per_m3"])
+            for t, state in zip(history.t, history.states, strict=True):
+                rho = 1.0 / state.v if state.v > 0 else ""
+                writer.writerow([repr(float(t)), repr(state.sigma), repr(state.u), rho])
+        written.append(path)
+    return written
+
+
+if __name__ == "__main__":
+    sys.exit(main())
