@@ -19,8 +19,7 @@ import sys
 from importlib import resources
 from pathlib import Path
 
-from materials import MaterialError, NoSolutionError, StateOutOfRangeError
-from materials import library
+from materials import MaterialError, NoSolutionError, StateOutOfRangeError, library
 
 from .engine import EventLimitError, run
 from .impedance_match import format_table, impedance_match, to_json_dict

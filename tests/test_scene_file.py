@@ -153,7 +153,7 @@ def test_demo_scene():
     path = resources.files("fronttrack").joinpath("scenes/demo.toml")
     scene = load_scene(path)
     assert scene.title == "Cu flyer on Al 2024 at 1 km/s"
-    assert scene.t_end == 4e-6
+    assert scene.t_end == 3e-6
     flyer, target = scene.layers
     assert (flyer.material.name, flyer.thickness, flyer.velocity) == ("Cu", 2e-3, 1000.0)
     assert (target.material.name, target.thickness, target.velocity) == ("Al2024", 6e-3, 0.0)
