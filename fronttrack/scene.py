@@ -95,6 +95,9 @@ class Accuracy:
     ``entropy_contacts``: keep the contacts that interactions leave inside a
     material (neglecting them changes volume and energy, never stress or
     velocity).  ``max_events``: stop with an error beyond this many events.
+    ``spall_spacing`` (m): no new spall plane closer than this to an earlier one
+    (the tension there is carried and reported); ``None`` means 10 % of the
+    layer's thickness, 0 allows any spacing.
     """
 
     rays_per_fan: int = 16
@@ -103,6 +106,7 @@ class Accuracy:
     release: str = "isentrope"
     entropy_contacts: bool = True
     max_events: int = 200_000
+    spall_spacing: float | None = None
 
 
 @dataclass(frozen=True)
@@ -186,6 +190,9 @@ class Scene:
         if acc.release not in RELEASE_PATHS:
             raise SceneError(f"accuracy.release: must be one of {RELEASE_PATHS}, "
                              f"got {acc.release!r}")
+        if acc.spall_spacing is not None and not acc.spall_spacing >= 0.0:
+            raise SceneError(f"accuracy.spall_spacing: must be >= 0 m, "
+                             f"got {acc.spall_spacing!r}")
         if not (isinstance(acc.max_events, int) and acc.max_events >= 1):
             raise SceneError(f"accuracy.max_events: must be a positive integer, "
                              f"got {acc.max_events!r}")

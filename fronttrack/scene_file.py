@@ -7,7 +7,7 @@ file reads as a lab notebook and converts to the SI ``Scene`` of
     title = "Cu on Al"
     t_end = "3 us"
     [accuracy]              # rays_per_fan, stress_tolerance, negligible_stress,
-                            # release, entropy_contacts, max_events
+                            # release, entropy_contacts, max_events, spall_spacing
     [materials.MyPMMA]      # inline material: model and its fields with units
     model = "mie-gruneisen"
     rho0 = "1186 kg/m3"
@@ -45,7 +45,7 @@ _LAYER_KEYS = ("material", "thickness", "velocity", "stress", "name", "bond")
 _BOUNDARY_KEYS = ("kind", "value", "history")
 _PROBE_KEYS = ("name", "at")
 _ACCURACY_KEYS = ("rays_per_fan", "stress_tolerance", "negligible_stress", "release",
-                  "entropy_contacts", "max_events")
+                  "entropy_contacts", "max_events", "spall_spacing")
 _BOUNDARY_DIMENSION = {"velocity": "velocity", "stress": "stress"}
 
 
@@ -242,6 +242,8 @@ def _accuracy(table: dict[str, Any]) -> Accuracy:
         release=_typed(table, "release", str, defaults.release),
         entropy_contacts=_typed(table, "entropy_contacts", bool, defaults.entropy_contacts),
         max_events=_typed(table, "max_events", int, defaults.max_events),
+        spall_spacing=_optional_quantity(table, "spall_spacing", "length",
+                                         "accuracy.spall_spacing", None),
     )
 
 

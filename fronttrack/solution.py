@@ -105,6 +105,9 @@ class Solution:
             "dropped_stress_total": engine.dropped_stress,
             "neglected_entropy_volume_jump": engine.neglected_entropy,
             "neglected_entropy_contacts": engine.neglected_contacts,
+            "spall_spacing": [engine.spall_spacing(i) for i in range(len(engine.scene.layers))],
+            "suppressed_spalls": engine.suppressed_spalls,
+            "largest_suppressed_tension": engine.suppressed_tension,
         }
         return cls(scene=engine.scene, fronts=fronts, regions=engine.regions,
                    events=engine.events, spalls=engine.spalls, stats=stats,
