@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import argparse
 import csv
+import dataclasses
 import json
 import sys
 from importlib import resources
@@ -62,6 +63,8 @@ def _parser() -> argparse.ArgumentParser:
     run_.add_argument("--json", type=Path, default=None, help="write the solution JSON here")
     run_.add_argument("--no-figures", action="store_true", help="skip the figures")
     run_.add_argument("--quiet", action="store_true", help="no progress or summary output")
+    run_.add_argument("--estimate-error", action="store_true",
+                      help="run again at half the ray step and report the estimated error")
     run_.set_defaults(handler=_run)
 
     match = commands.add_parser("match", help="impedance match a flyer onto a stack")
@@ -95,6 +98,9 @@ def _demo(args) -> int:
 
 def _run(args) -> int:
     scene = load_scene(args.scene)
+    if args.estimate_error:
+        scene = dataclasses.replace(
+            scene, accuracy=dataclasses.replace(scene.accuracy, estimate_error=True))
     solution = _solve(scene, quiet=args.quiet)
     written = _write_outputs(solution, args.output, json_path=args.json,
                              figures=not args.no_figures)
@@ -141,6 +147,10 @@ def _solve(scene, quiet: bool):
               f"{len(solution.spalls)} spall planes, solved in {stats['solve_time']:.3g} s "
               f"(release: {report['release']}, {report['dropped_waves']} waves below "
               f"{report['negligible_stress']:.3g} Pa dropped)", file=sys.stderr)
+        estimate = report.get("error_estimate")
+        if estimate:
+            print(f"estimated error of the probe records: {estimate['sigma'] / 1e6:.3g} MPa, "
+                  f"{estimate['u']:.3g} m/s ({estimate['method']})", file=sys.stderr)
     return solution
 
 

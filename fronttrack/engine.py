@@ -35,6 +35,7 @@ import time
 from characteristics.rays import discretise_fan, ray_count
 from materials import LEFT, RIGHT, Fan, State, solve_boundary, solve_contact
 
+from .error_estimate import estimate_error
 from .fronts import Front, Region
 from .scene import Scene
 from .solution import EventRecord, Solution, SpallRecord
@@ -605,5 +606,14 @@ def _interaction_kind(incoming) -> str:
 
 
 def run(scene: Scene, progress=None) -> Solution:
-    """Evolve ``scene`` to ``scene.t_end`` and return its ``Solution``."""
-    return Engine(scene, progress).run()
+    """Evolve ``scene`` to ``scene.t_end`` and return its ``Solution``.
+
+    With ``accuracy.estimate_error`` and fans present, the scene is run again at
+    half the ray step and the estimate is added to ``accuracy_report``.
+    """
+    solution = Engine(scene, progress).run()
+    if scene.accuracy.estimate_error:
+        estimate = (estimate_error(solution, run) if solution.stats["rays"] > 0
+                    else {"method": "exact: no fans in this solution", "sigma": 0.0, "u": 0.0})
+        solution.accuracy_report["error_estimate"] = estimate
+    return solution

@@ -97,7 +97,9 @@ class Accuracy:
     velocity).  ``max_events``: stop with an error beyond this many events.
     ``spall_spacing`` (m): no new spall plane closer than this to an earlier one
     (the tension there is carried and reported); ``None`` means 10 % of the
-    layer's thickness, 0 allows any spacing.
+    layer's thickness, 0 allows any spacing.  ``estimate_error``: run the scene
+    again at half the ray step and report the estimated error of the records
+    (``fronttrack.error_estimate``) when it has fans.
     """
 
     rays_per_fan: int = 16
@@ -107,6 +109,7 @@ class Accuracy:
     entropy_contacts: bool = True
     max_events: int = 200_000
     spall_spacing: float | None = None
+    estimate_error: bool = False
 
 
 @dataclass(frozen=True)

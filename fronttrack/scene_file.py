@@ -7,7 +7,8 @@ file reads as a lab notebook and converts to the SI ``Scene`` of
     title = "Cu on Al"
     t_end = "3 us"
     [accuracy]              # rays_per_fan, stress_tolerance, negligible_stress,
-                            # release, entropy_contacts, max_events, spall_spacing
+                            # release, entropy_contacts, max_events, spall_spacing,
+                            # estimate_error
     [materials.MyPMMA]      # inline material: model and its fields with units
     model = "mie-gruneisen"
     rho0 = "1186 kg/m3"
@@ -45,7 +46,7 @@ _LAYER_KEYS = ("material", "thickness", "velocity", "stress", "name", "bond")
 _BOUNDARY_KEYS = ("kind", "value", "history")
 _PROBE_KEYS = ("name", "at")
 _ACCURACY_KEYS = ("rays_per_fan", "stress_tolerance", "negligible_stress", "release",
-                  "entropy_contacts", "max_events", "spall_spacing")
+                  "entropy_contacts", "max_events", "spall_spacing", "estimate_error")
 _BOUNDARY_DIMENSION = {"velocity": "velocity", "stress": "stress"}
 
 
@@ -244,6 +245,7 @@ def _accuracy(table: dict[str, Any]) -> Accuracy:
         max_events=_typed(table, "max_events", int, defaults.max_events),
         spall_spacing=_optional_quantity(table, "spall_spacing", "length",
                                          "accuracy.spall_spacing", None),
+        estimate_error=_typed(table, "estimate_error", bool, defaults.estimate_error),
     )
 
 

@@ -154,3 +154,25 @@ def test_spall_scene_balance_converges_at_second_order():
         errors.append(sol.conservation()["energy_relative_error"])
     assert math.log2(errors[0] / errors[1]) > 1.7, errors
     assert math.log2(errors[1] / errors[2]) > 1.7, errors
+
+
+def test_error_estimate_brackets_the_true_error():
+    """The estimate (run at half the ray step) is of the size of the true error, which
+    is measured against a run at eight times the rays."""
+    import dataclasses
+
+    cu = MieGruneisen("Cu", 8930, 3940, 1.49, 2.0)
+    scene = Scene(layers=(Layer(cu, 1e-3, 600.0), Layer(cu, 3e-3, bond="unbonded")),
+                  t_end=1.0e-6, probes=(Probe("inside", 2.5e-3),),
+                  accuracy=Accuracy(rays_per_fan=4, estimate_error=True))
+    sol = run(scene)
+    estimate = sol.accuracy_report["error_estimate"]
+    reference = run(dataclasses.replace(scene, accuracy=Accuracy(rays_per_fan=32)))
+    a, b = sol.history(2.5e-3), reference.history(2.5e-3)
+    times = np.union1d(a.t, b.t)
+    ends = np.append(times[1:], scene.t_end)
+    mids = 0.5 * (times + ends)
+    diff = np.abs(a.sigma[np.searchsorted(a.t, mids, "right") - 1]
+                  - b.sigma[np.searchsorted(b.t, mids, "right") - 1])
+    true = float(np.sum(diff * (ends - times)) / scene.t_end)
+    assert 0.3 * true < estimate["sigma"] < 3.0 * true
