@@ -60,20 +60,22 @@ def region_motions(solution) -> dict[int, AffineMotion]:
                                                           "boundary")}
     motions: dict[int, AffineMotion] = {}
     owners: dict[tuple[float, float], list] = {}
-    initial = sorted((r for r in solution.regions if _bottom_width(r.polygon()) > 0.0),
-                     key=lambda r: min(p[0] for p in r.polygon()))
+    polygons = {r.id: r.polygon() for r in solution.regions}
+    centres = {i: _centroid_x(p) for i, p in polygons.items()}
+    initial = sorted((r for r in solution.regions if _bottom_width(polygons[r.id]) > 0.0),
+                     key=lambda r: min(p[0] for p in polygons[r.id]))
     x_start, x_euler = 0.0, 0.0
     for region in initial:
         stretch = region.state.v / region.material.v0
-        width = _bottom_width(region.polygon())
+        width = _bottom_width(polygons[region.id])
         if math.isfinite(stretch):
             motions[region.id] = AffineMotion(x_euler - stretch * x_start, stretch,
                                               region.state.u)
         x_start, x_euler = x_start + width, x_euler + stretch * width
     for region in sorted(solution.regions, key=lambda r: r.id):
-        polygon = region.polygon()
+        polygon = polygons[region.id]
         if region.id not in motions:
-            motion = _born_motion(region, polygon, owners, motions, site_x)
+            motion = _born_motion(region, owners, motions, site_x, centres)
             if motion is not None:
                 motions[region.id] = motion
         for point in polygon:
@@ -81,16 +83,16 @@ def region_motions(solution) -> dict[int, AffineMotion]:
     return motions
 
 
-def _born_motion(region, polygon, owners, motions, site_x) -> AffineMotion | None:
+def _born_motion(region, owners, motions, site_x, centres) -> AffineMotion | None:
     """Motion of a region born after ``t = 0``, from an older region at its birth point."""
     stretch = region.state.v / region.material.v0
     if not math.isfinite(stretch) or not region.left_points:
         return None
     point = region.left_points[0]
-    side = _centroid_x(polygon) - point[0]
+    side = centres[region.id] - point[0]
     candidates = [r for r in owners.get(point, []) if r.id in motions]
     if point[0] in site_x:
-        same = [r for r in candidates if (_centroid_x(r.polygon()) - point[0]) * side > 0.0]
+        same = [r for r in candidates if (centres[r.id] - point[0]) * side > 0.0]
         candidates = same or candidates
     if not candidates:
         return None

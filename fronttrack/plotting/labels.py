@@ -10,8 +10,9 @@ the number then lies inside its region and crosses no front.
 
 Skipped, by design:
 
-- fan-interior regions (``region.in_fan``): the thin wedges between the rays
-  of a discretised fan and the cells of fan–fan interaction;
+- fan-interior regions (given by the caller, see ``plotting.fans``): the
+  wedges between the rays of a discretised fan and the cells of fan–fan
+  interaction;
 - regions too small on the page to hold their number legibly (this includes
   the slivers left between nearly coincident fronts);
 - the parts of a region covered by ``obstacles`` (other annotations, in points).
@@ -24,7 +25,7 @@ from __future__ import annotations
 from collections.abc import Callable, Iterable
 
 from shapely import make_valid
-from shapely.geometry import MultiPolygon, Point, Polygon
+from shapely.geometry import MultiPolygon, Point, Polygon, box
 from shapely.ops import polylabel
 
 CHAR_WIDTH = 0.62
@@ -59,6 +60,19 @@ class PageScale:
     def to_data(self, x: float, y: float) -> tuple[float, float]:
         return self.x0 + x / self.sx, self.y0 + y / self.sy
 
+    @classmethod
+    def of_axes(cls, ax) -> PageScale:
+        """The scale of an axes as laid out now (its position in the figure, its limits)."""
+        position = ax.get_position()
+        width, height = ax.figure.get_size_inches()
+        return cls(ax.get_xlim(), ax.get_ylim(), (position.width * width * 72.0,
+                                                  position.height * height * 72.0))
+
+    def text_box(self, x, y, dx: float, dy: float, width: float, height: float):
+        """Page box (pt) of a ``width`` x ``height`` text offset by ``dx, dy`` from a point."""
+        px, py = self.to_page([(x, y)])[0]
+        return box(px + dx, py + dy, px + dx + width, py + dy + height)
+
 
 def _largest_part(geometry):
     """The largest polygon of a (possibly multi-part) geometry, or ``None``."""
@@ -70,15 +84,16 @@ def _largest_part(geometry):
 
 
 def place_labels(regions: Iterable, polygon_of: Callable, scale: PageScale,
-                 fontsize: float, obstacles=None) -> dict[int, tuple[float, float]]:
+                 fontsize: float, obstacles=None, skip=frozenset()) -> dict[int, tuple]:
     """Label positions in data units, by region id, for the regions that can hold one.
 
     ``polygon_of(region)`` returns the region's vertices in data units (mm, µs),
-    ``obstacles`` an optional shapely geometry (in points) to keep clear.
+    ``obstacles`` an optional shapely geometry (in points) to keep clear, and
+    ``skip`` the ids of regions never to label (fan interiors).
     """
     placed: dict[int, tuple[float, float]] = {}
     for region in regions:
-        if region.in_fan:
+        if region.id in skip:
             continue
         radius = label_radius(str(region.id), fontsize)
         vertices = scale.to_page(polygon_of(region))

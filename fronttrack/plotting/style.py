@@ -29,7 +29,7 @@ MATERIAL_COLORS = ("#1f4e9c", "#c0392b", "#2e8b57", "#8e44ad", "#d35400", "#16a0
 STRESS_CMAP = "RdBu_r"
 """Diverging colormap for stress: red for compression, blue for tension, white at zero."""
 
-LABEL_FONTSIZE = 7.5
+LABEL_FONTSIZE = 8.0
 """Font size (pt) of region numbers on every diagram."""
 
 

@@ -106,8 +106,7 @@ def eulerian_view(solution) -> XtView:
             spalls.append((float(motions[region.id](s.x, s.t)) * MM, s.t * US))
 
     def initial_position(x):
-        region = solution.region_at(x, 0.0)
-        return float(motions[region.id](x, 0.0)) * MM
+        return solution.initial_eulerian(x) * MM
 
     return XtView(eulerian=True, polygons=polygons, waves=waves, site_segments=segments,
                   voids=_voids(faces), spalls=spalls,

@@ -1,0 +1,109 @@
+"""Annotations of an X–t diagram: layer names, spall points, the line-style key.
+
+Each drawing function returns the page area (shapely, in points) its texts
+cover, so that region numbers can keep clear of them.
+"""
+
+from __future__ import annotations
+
+from matplotlib.lines import Line2D
+from matplotlib.patches import Patch
+from shapely.ops import unary_union
+
+from .labels import PageScale
+from .xt_style import CONTACT, EDGE_RAY, GAP, INTERFACE, RELEASE_SHOCK, SHOCK, SPALL, VOID
+
+SPALL_CLUSTER = 40.0
+"""Spall points closer than this on the page (pt, Manhattan) share one annotation."""
+
+
+def draw_layer_names(ax, view):
+    """Write ``name (material)`` at the bottom of each layer; return the area it covers (pt)."""
+    covered = []
+    scale = PageScale.of_axes(ax)
+    for x0, x1, layer in view.layers:
+        width_pt = (x1 - x0) * scale.sx
+        for text in _layer_texts(layer):
+            text_width = 0.55 * 7.0 * len(text) + 4
+            if text_width < width_pt - 4:
+                xm = 0.5 * (x0 + x1)
+                ax.annotate(text, (xm, 0.0), xytext=(0, 3), textcoords="offset points",
+                            ha="center", va="bottom", fontsize=7, zorder=7,
+                            bbox={"boxstyle": "round,pad=0.15", "fc": "white", "ec": "none",
+                                  "alpha": 0.85})
+                covered.append(scale.text_box(xm, 0.0, -0.5 * text_width, 0, text_width, 14))
+                break
+    return unary_union(covered) if covered else None
+
+
+def _layer_texts(layer) -> list[str]:
+    material = layer.material.name
+    if layer.name and layer.name != material:
+        return [f"{layer.name} ({material})", material]
+    return [material]
+
+
+def draw_spalls(ax, view) -> list:
+    """Star every spall point; annotate clusters of nearby ones once ("spall 2–4")."""
+    covered = []
+    for x, t in view.spalls:
+        ax.plot([x], [t], ls="none", **SPALL)
+    scale = PageScale.of_axes(ax)
+    page = scale.to_page(view.spalls)
+    page_width = (ax.get_xlim()[1] - ax.get_xlim()[0]) * scale.sx
+    for first, last in _clusters(page, SPALL_CLUSTER):
+        x, t = view.spalls[first]
+        if len(view.spalls) == 1:
+            text = "spall"
+        else:
+            text = f"spall {first + 1}" if first == last else f"spall {first + 1}–{last + 1}"
+        width = 4.5 * len(text)
+        right = page[first][0] + 7 + width < page_width
+        ax.annotate(text, (x, t), xytext=(7 if right else -7, -3), textcoords="offset points",
+                    fontsize=7, color="#8b0000", zorder=7, ha="left" if right else "right",
+                    bbox={"boxstyle": "round,pad=0.1", "fc": "white", "ec": "none",
+                          "alpha": 0.75})
+        left_edge = -7 if right else -14 - width
+        covered.append(scale.text_box(x, t, left_edge, -8, 14 + width, 16))
+    return covered
+
+
+def _clusters(points, distance) -> list[tuple[int, int]]:
+    """Runs ``(first, last)`` of consecutive points each within ``distance`` of the previous."""
+    runs = []
+    for k, (px, py) in enumerate(points):
+        if runs:
+            qx, qy = points[runs[-1][1]]
+            if abs(px - qx) + abs(py - qy) < distance:
+                runs[-1] = (runs[-1][0], k)
+                continue
+        runs.append((k, k))
+    return runs
+
+
+def draw_key(ax, view) -> int:
+    """The line-style key above the diagram; returns its number of rows."""
+    kinds = {f.kind for f, _, _ in view.waves}
+    handles = []
+    if any(f.kind == "shock" and f.jump >= 0 for f, _, _ in view.waves):
+        handles.append(Line2D([], [], label="shock", **SHOCK))
+    if any(f.kind == "shock" and f.jump < 0 for f, _, _ in view.waves):
+        handles.append(Line2D([], [], label="release shock", **RELEASE_SHOCK))
+    if "ray" in kinds:
+        handles.append(Line2D([], [], label="fan rays", **EDGE_RAY))
+    site_kinds = {s.kind for s in view.site_segments}
+    if "interface" in site_kinds:
+        handles.append(Line2D([], [], label="interface", **INTERFACE))
+    if "contact" in site_kinds:
+        handles.append(Line2D([], [], label="entropy contact", **CONTACT))
+    if "gap" in site_kinds and view.eulerian:
+        handles.append(Patch(label="gap (void)", **VOID))
+    elif "gap" in site_kinds:
+        handles.append(Line2D([], [], label="gap (opened)", **GAP))
+    if view.spalls:
+        handles.append(Line2D([], [], ls="none", label="spall", **SPALL))
+    columns = len(handles) if len(handles) <= 5 else (len(handles) + 1) // 2
+    ax.legend(handles=handles, loc="lower center", bbox_to_anchor=(0.5, 1.0), ncol=columns,
+              fontsize=7, frameon=False, handlelength=2.2, columnspacing=1.2,
+              borderaxespad=0.2)
+    return 1 if len(handles) <= 5 else 2
