@@ -6,6 +6,7 @@ about fronts or events.
 """
 
 from .base import Material
+from .elastic_plastic import ElasticPlastic, ElasticPlasticWaveCurve
 from .errors import MaterialError, NoSolutionError, StateOutOfRangeError
 from .ideal_gas import IdealGas
 from .library import available, get, material_from_spec
@@ -16,8 +17,8 @@ from .state import LEFT, RIGHT, State
 from .waves import Fan, Shock
 
 __all__ = [
-    "LEFT", "RIGHT", "Fan", "IdealGas", "LinearElastic", "Material", "MaterialError",
-    "MieGruneisen", "NoSolutionError", "RiemannSolution", "Shock", "State",
-    "StateOutOfRangeError", "available", "get", "material_from_spec", "solve_boundary",
-    "solve_contact",
+    "LEFT", "RIGHT", "ElasticPlastic", "ElasticPlasticWaveCurve", "Fan", "IdealGas",
+    "LinearElastic", "Material", "MaterialError", "MieGruneisen", "NoSolutionError",
+    "RiemannSolution", "Shock", "State", "StateOutOfRangeError", "available", "get",
+    "material_from_spec", "solve_boundary", "solve_contact",
 ]

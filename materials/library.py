@@ -18,6 +18,10 @@ Models and fields (``MODELS``):
   ``poisson``, converted to ``lambda = E nu / ((1 + nu)(1 - 2 nu))`` and
   ``mu = E / (2 (1 + nu))``.  Optional ``spall_strength``.
 - ``"ideal-gas"``: ``gamma``, ``rho0``; optional ``cv``.
+- ``"elastic-plastic"``: ``rho0``, ``lambda``, ``mu`` (Lamé constants, Pa) and
+  ``yield_strength`` (Pa, the yield stress Y in simple tension); optional
+  ``spall_strength``.  The small-strain ideal elastic–plastic solid of
+  ``materials.elastic_plastic``.
 
 A solid without ``spall_strength`` never spalls (``math.inf``).  ``description``
 and ``source`` (strings) may accompany any specification and are not used.
@@ -33,6 +37,7 @@ from importlib import resources
 from typing import Any
 
 from .base import Material, require_positive
+from .elastic_plastic import ElasticPlastic
 from .errors import MaterialError
 from .ideal_gas import IdealGas
 from .linear_elastic import LinearElastic
@@ -44,6 +49,8 @@ MODELS: dict[str, dict[str, tuple[str, ...]]] = {
     "linear-elastic": {"required": ("rho0",),
                        "optional": ("C", "lambda", "mu", "E", "poisson", "spall_strength")},
     "ideal-gas": {"required": ("gamma", "rho0"), "optional": ("cv",)},
+    "elastic-plastic": {"required": ("rho0", "lambda", "mu", "yield_strength"),
+                        "optional": ("spall_strength",)},
 }
 """Numeric fields of each model (a linear-elastic solid also needs one of its
 stiffness choices, see ``_LINEAR_ELASTIC_CHOICES``)."""
@@ -54,7 +61,7 @@ FIELD_DIMENSIONS: dict[str, str] = {
     "rho0": "density", "c0": "velocity", "s": "dimensionless", "gamma0": "dimensionless",
     "cv": "specific_heat", "spall_strength": "stress", "up_max": "velocity",
     "C": "velocity", "lambda": "stress", "mu": "stress", "E": "stress",
-    "poisson": "dimensionless", "gamma": "dimensionless",
+    "poisson": "dimensionless", "gamma": "dimensionless", "yield_strength": "stress",
 }
 """Physical dimension of every numeric specification field, for readers of files
 that write quantities with units (the dimension names of ``fronttrack.units``)."""
@@ -164,6 +171,10 @@ def material_from_spec(name: str, spec: dict[str, Any]) -> Material:
                             up_max=values.get("up_max"))
     if model == "linear-elastic":
         return _linear_elastic(name, values)
+    if model == "elastic-plastic":
+        return ElasticPlastic(name, values["rho0"], values["lambda"], values["mu"],
+                              values["yield_strength"],
+                              spall_strength=values.get("spall_strength", math.inf))
     return IdealGas(name, values["gamma"], values["rho0"], cv=values.get("cv"))
 
 
