@@ -36,7 +36,7 @@ from characteristics.rays import discretise_fan, ray_count
 from materials import LEFT, RIGHT, Fan, State, solve_boundary, solve_contact
 
 from .error_estimate import estimate_error
-from .fronts import Front, Region
+from .fronts import Front, Region, inside_fan
 from .scene import Scene
 from .solution import EventRecord, Solution, SpallRecord
 
@@ -152,9 +152,7 @@ class Engine:
         for front in fronts:
             self._push_site(front, 0.0)
         for boundary, spec in ((left, scene.left), (fronts[-1], scene.right)):
-            boundary.history = self._boundary_steps(spec, boundary)
-            if boundary.history:
-                self._push_site(boundary, boundary.history[0][0])
+            boundary.boundary_steps = self._boundary_steps(spec, boundary)
 
     def _stress_scale(self, states: list[State]) -> float:
         """Largest stress the initial Riemann problems produce (Pa): scales rays and thresholds."""
@@ -322,6 +320,8 @@ class Engine:
             spec = self.scene.left if site.side == "left" else self.scene.right
             region = region_right if site.side == "left" else region_left
             value = self._boundary_value(site, spec, t)
+            if timer:
+                self._schedule_next_step(site, t)
             if spec.kind in ("free", "stress"):
                 sol = solve_boundary(region.material, region.state, site.side, stress=value,
                                      release=release)
@@ -400,13 +400,22 @@ class Engine:
         site.history.append((t, site.kind))
 
     def _boundary_value(self, site: Front, spec, t: float) -> float:
+        """Prescribed stress (Pa) or velocity (m/s) of a boundary at time ``t`` (s)."""
         if spec.kind in ("free", "wall"):
             return 0.0
         value = spec.value_at(0.0)
-        for step_time, step_value in site.history:
+        for step_time, step_value in site.boundary_steps:
             if step_time <= t * (1.0 + 1e-15):
                 value = step_value
         return value
+
+    def _schedule_next_step(self, site: Front, t: float) -> None:
+        """Queue the boundary's first prescribed step after ``t`` (its timer event)."""
+        later = (step_time for step_time, _ in site.boundary_steps
+                 if step_time > t * (1.0 + 1e-15))
+        step_time = next(later, None)
+        if step_time is not None:
+            self._push_site(site, step_time)
 
     # --- rebuilding the front list ----------------------------------------------
     def _wave_fronts(self, waves, material, t, x, incoming, direction):
@@ -484,19 +493,17 @@ class Engine:
                          x: float) -> Front | None:
         """A contact for the entropy jump between two star states, if it matters.
 
-        A wave of stress ``S`` crossing a contact between impedances ``Z_l`` and
-        ``Z_r`` reflects ``S |Z_l - Z_r| / (Z_l + Z_r)``.  A contact that would
-        reflect less than the negligible stress from the scene's largest wave is
-        not tracked (every later crossing would be an event for nothing): the two
+        A contact that would reflect less than the negligible stress from the
+        scene's largest wave (``Material.contact_reflection``: the impedance jump,
+        and for an elastic–plastic solid the offset of the yield stresses) is not
+        tracked (every later crossing would be an event for nothing): the two
         states are merged and the largest relative volume jump so neglected is
         reported.  Jumps below ``ENTROPY_JUMP_TOLERANCE`` are rounding.
         """
         jump = abs(left.v - right.v) / max(left.v, right.v)
         keep = self.acc.entropy_contacts and jump > ENTROPY_JUMP_TOLERANCE
         if keep and self.negligible > 0.0 and math.isfinite(left.v + right.v):
-            z_l = material.sound_speed(left.v, left.e)
-            z_r = material.sound_speed(right.v, right.e)
-            keep = self.stress_scale * abs(z_l - z_r) / (z_l + z_r) > self.negligible
+            keep = material.contact_reflection(left, right, self.stress_scale) > self.negligible
         if keep:
             return self._new_front("contact", x, t, bond="bonded")
         self.neglected_entropy = max(self.neglected_entropy, jump)
@@ -534,8 +541,7 @@ class Engine:
             self.head = items[0]
         layer_left = region_left.layer if region_left is not None else region_right.layer
         layer_right = region_right.layer if region_right is not None else layer_left
-        if middle is not None and middle.region_right is not None:
-            middle.earlier_regions.append((t, middle.region_right.id))
+        continuing = middle.region_right if middle is not None else None
         for k, front in enumerate(items):
             front.left_region = (items[k - 1].region_right.id if k > 0 else
                                  (region_left.id if region_left is not None else None))
@@ -545,10 +551,12 @@ class Engine:
                 material = region_right.material if on_right else region_left.material
                 layer = layer_right if on_right else layer_left
                 region = self._new_region(state, material, layer, t, point, point)
-                region.in_fan = front.kind == "ray" or items[k + 1].kind == "ray"
+                region.in_fan = inside_fan(front, items[k + 1])
                 front.region_right = region
             else:
                 front.region_right = region_right
+        if continuing is not None and middle.region_right is not continuing:
+            middle.earlier_regions.append((t, continuing.id))
         for a, b in zip(chain[:-1], chain[1:], strict=True):
             self._push_pair(a, b, t)
 
@@ -563,6 +571,7 @@ class Engine:
         state = _merged(region_left.state, region_right.state)
         merged = self._new_region(state, region_left.material, region_left.layer, t,
                                   (x_left, t), (x_right, t))
+        merged.in_fan = inside_fan(before, after)
         before.next, after.prev = after, before
         before.earlier_regions.append((t, region_left.id))
         before.region_right = merged

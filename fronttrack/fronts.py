@@ -71,6 +71,7 @@ class Front:
     ``strength`` (tension it carries, Pa), ``side`` of a boundary, and the
     gap's ``gap_width`` (Eulerian, m) at ``gap_time``.  ``history`` records
     ``(t, kind)`` changes of a site's kind (an interface that opens into a gap);
+    ``boundary_steps`` the ``(t, value)`` steps of a boundary's prescribed history;
     ``earlier_regions`` records ``(t, region_id)``: the region on the right
     until ``t``, when two neighbouring regions merged into a new one.
     """
@@ -101,6 +102,7 @@ class Front:
     gap_time: float = 0.0
     gap_version: int = 0
     history: list = field(default_factory=list)
+    boundary_steps: list = field(default_factory=list)
     earlier_regions: list = field(default_factory=list)
 
     @property
@@ -112,3 +114,16 @@ class Front:
         if self.speed == 0.0:
             return self.x0
         return self.x0 + self.speed * (t - self.t0)
+
+
+def inside_fan(left: Front, right: Front) -> bool:
+    """True when the region between ``left`` and ``right`` lies inside a fan.
+
+    It does when both are rays of one direction and of one fan, or both are
+    one-ray fans (the train of single rays that a fan sends off a surface, one
+    reflection at a time).  The constant states ahead of a fan's head and
+    behind its tail are not inside it.
+    """
+    if left.kind != "ray" or right.kind != "ray" or left.direction != right.direction:
+        return False
+    return left.fan == right.fan or (left.ray_count == 1 and right.ray_count == 1)

@@ -151,8 +151,9 @@ class Solution:
             candidates = np.nonzero(live & (a["right"] >= 0))[0]
             best = candidates[np.argmin(pos[candidates])]
         else:
-            # rightmost front at or left of x; among equals the latest-born one
-            order = np.lexsort((a["t0"][candidates], pos[candidates]))
+            # rightmost front at or left of x; among fronts at one point (born at one
+            # event) the fastest, which is rightmost an instant later; then the latest-born
+            order = np.lexsort((a["t0"][candidates], a["speed"][candidates], pos[candidates]))
             best = candidates[order[-1]]
         return self._region_by_id[int(a["right"][best])]
 
@@ -171,11 +172,15 @@ class Solution:
         return np.unique(tc[ok])
 
     def station(self, at) -> float:
-        """Lagrangian position (m) of a probe location (``"left"``, ``"right"`` or metres)."""
+        """Lagrangian position (m) of a probe location: ``"left"``, ``"right"``, metres,
+        or the name of one of the scene's probes."""
         if at == "left":
             return 0.0
         if at == "right":
             return self.scene.length
+        probe = next((p for p in self.scene.probes if isinstance(at, str) and p.name == at), None)
+        if probe is not None:
+            return self.station(probe.at)
         return min(max(float(at), 0.0), self.scene.length)
 
     def history(self, at) -> History:
@@ -209,7 +214,7 @@ class Solution:
         live = (a["t0"] <= t) & ((a["t1"] > t) | (a["t1"] >= self.scene.t_end))
         pos = np.where(a["speed"] == 0.0, a["x0"], a["x0"] + a["speed"] * (t - a["t0"]))
         index = np.nonzero(live)[0]
-        order = index[np.lexsort((a["t0"][index], pos[index]))]
+        order = index[np.lexsort((a["t0"][index], a["speed"][index], pos[index]))]
         intervals = []
         for i, j in zip(order[:-1], order[1:], strict=True):
             if a["right"][i] >= 0 and pos[j] > pos[i]:

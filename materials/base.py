@@ -153,6 +153,18 @@ class Material(ABC):
         ``d sigma / (rho0 C_L) = -rho0 C_L dv``.
         """
 
+    def contact_reflection(self, left: State, right: State, amplitude: float) -> float:
+        """Stress (Pa) a wave of ``amplitude`` (Pa) reflects from a contact between two
+        states of this material at equal stress and velocity (an entropy jump).
+
+        Acoustically a contact between impedances ``Z_l`` and ``Z_r`` reflects
+        ``amplitude |Z_l - Z_r| / (Z_l + Z_r)``; the reference density cancels, so
+        the Lagrangian sound speeds stand for the impedances.
+        """
+        c_l = self.sound_speed(left.v, left.e)
+        c_r = self.sound_speed(right.v, right.e)
+        return amplitude * abs(c_l - c_r) / (c_l + c_r)
+
     def wave_curve(self, ahead: State, direction: int, release: str = "isentrope"):
         """States one wave of the given direction can reach from ``ahead``.
 

@@ -259,6 +259,20 @@ class ElasticPlastic(Material):
         the yield surface, and any unloading, travel at ``C0``; plastic waves at ``CB``."""
         return self.C0
 
+    def contact_reflection(self, left: State, right: State, amplitude: float) -> float:
+        """Stress (Pa) a wave of ``amplitude`` reflects from a jump in plastic strain.
+
+        Both sides have the elastic impedance ``rho0 C0``, but at equal stress a
+        plastic-strain jump ``d eps_p`` offsets their yield stresses by
+        ``(3/2) K d eps_p``: a wave that yields one side and not the other splits
+        differently on the two sides, and the difference it reflects is at most
+        that offset (and at most the wave itself).
+        """
+        if math.isinf(self.yield_strength):
+            return 0.0
+        (low_l, high_l), (low_r, high_r) = self.yield_stresses(left), self.yield_stresses(right)
+        return min(abs(amplitude), max(abs(low_l - low_r), abs(high_l - high_r)))
+
     def volume_range(self) -> tuple[float, float]:
         # As for LinearElastic: the law has no spinodal; the upper bound must be finite
         # (wave curves read an infinite one as expansion to vacuum).

@@ -459,19 +459,22 @@ def test_engine_plate_impact_precursor_and_rear_surface():
           f"t = {tension['t'] * 1e6:.4f} us; {sol.stats['events']} events")
 
 
-def test_engine_plate_impact_runs_to_6_us_with_coarse_negligible_stress():
-    """The full 6 us of the scene.  With the default negligible stress (1e-6 of the peak)
-    split waves multiply into hundreds of thousands of events (see the report); 10 MPa
-    (0.2 % of the 4.65 GPa peak) keeps it to a few thousand."""
-    sol = run(_impact_scene(6e-6, negligible=10e6))
+def test_engine_plate_impact_past_separation_with_coarse_negligible_stress():
+    """Past the separation of flyer and target (gap opens at X = 5 mm, t ~ 3.54 us) each
+    plate rings on its own and every interaction splits waves again, so the number of
+    waves grows geometrically with time (4 us: ~5600 events at 10 MPa; 5 us: ~38000;
+    6 us: ~280000).  10 MPa (0.2 % of the 4.65 GPa peak) keeps 4 us cheap; the dropped
+    waves (each below 10 MPa) carry away a little momentum and energy."""
+    sol = run(_impact_scene(4e-6, negligible=10e6))
     assert sol.crossing_times(15e-3)[0] == pytest.approx(PRECURSOR_ARRIVAL, rel=1e-13)
     assert close(sol.state_at(15e-3, 1.8e-6).u, 2 * HEL / Z0)
-    p, *_ = _energy_totals(sol, 6e-6)
-    # the dropped waves (each below 10 MPa) carry away a little momentum
-    assert close(p, RHO * 5e-3 * 230.0, rel=5e-3)
+    assert any(e.kind == "gap-open" and e.x == 5e-3 for e in sol.events)
+    p, kinetic, stored, dissipated = _energy_totals(sol, 4e-6)
+    assert close(p, RHO * 5e-3 * 230.0, rel=1e-3)
+    assert close(kinetic + stored + dissipated, RHO * 5e-3 * 0.5 * 230.0**2, rel=1e-3)
     tension = sol.max_tension()
     assert tension["sigma"] < -HEL
-    print(f"\nsteel plate impact (6 us, negligible 10 MPa): max tension "
+    print(f"\nsteel plate impact (4 us, negligible 10 MPa): max tension "
           f"{-tension['sigma'] / 1e9:.4f} GPa at X = {tension['x'] * 1e3:.4f} mm, "
           f"t = {tension['t'] * 1e6:.4f} us; {sol.stats['events']} events")
 
@@ -491,21 +494,12 @@ def test_engine_conserves_energy_when_contacts_are_kept():
     assert sol.stats["contacts"] > 0
 
 
-@pytest.mark.xfail(strict=True, reason=(
-    "engine issue: Engine._entropy_contact judges a contact by material.sound_speed, which "
-    "is C0 on both sides of a jump in plastic strain, so it merges the two star states "
-    "(_merged averages v, e, plastic_strain) and the energy balance breaks"))
 def test_engine_conserves_energy_with_default_accuracy():
     sol = run(_impact_scene(1.5e-6))
     _, kinetic, stored, dissipated = _energy_totals(sol, 1.5e-6)
     assert close(kinetic + stored + dissipated, RHO * 5e-3 * 0.5 * 230.0**2, rel=1e-9)
 
 
-@pytest.mark.xfail(strict=True, reason=(
-    "solution issue: Solution.history samples each interval at its midpoint; here that "
-    "midpoint (1.8672 us) is the instant of a collision that emits an elastic and a plastic "
-    "wave from one point, and region_at's tie-break returns the zero-width region between "
-    "them (sigma = HEL, u = 3 HEL/Z0) instead of the free-surface state"))
 def test_engine_rear_free_surface_history():
     sol = run(_impact_scene(3.5e-6))
     history = sol.history("rear")

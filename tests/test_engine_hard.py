@@ -180,3 +180,27 @@ def test_bad_scenes_name_the_field(layers, field):
 def test_bad_probe_position_names_the_range():
     with pytest.raises(SceneError, match="outside the stack"):
         run(Scene(layers=(Layer(copper(), 1e-3),), t_end=1e-6, probes=(Probe("p", 2e-3),)))
+
+
+def test_ramped_velocity_boundary_applies_every_step():
+    """A piston ramping from 0 to 100 m/s over 1 us drives an elastic bar: the ramp is
+    replaced by steps of at most one ray's stress, each launched at its own time, so the
+    record at a station climbs in those steps to the exact final state Z * 100 m/s."""
+    bar = LinearElastic("bar", rho0=2700.0, C=5000.0)
+    ramp = Boundary("velocity", ((0.0, 0.0), (1e-6, 100.0)))
+    station = 2e-3
+    scene = Scene(layers=(Layer(bar, 10e-3),), t_end=1.8e-6, left=ramp,
+                  probes=(Probe("station", station),), accuracy=Accuracy(rays_per_fan=10))
+    solution = run(scene)
+    history = solution.history("station")
+    arrival = station / bar.C
+    steps = [(t, s.sigma) for t, s in zip(history.t, history.states, strict=True) if t > 0]
+    assert len(steps) == 11  # ten ramp steps and the final value at the end of the ramp
+    assert steps[0][0] == pytest.approx(arrival, rel=1e-12)
+    assert steps[-1][0] == pytest.approx(arrival + 1e-6, rel=1e-12)
+    impedance = bar.rho0 * bar.C
+    assert steps[-1][1] == pytest.approx(impedance * 100.0, rel=1e-12)
+    for k, (t, sigma) in enumerate(steps[:-1]):
+        # step k holds the ramp's value at the middle of its sub-interval
+        assert t == pytest.approx(arrival + k * 0.1e-6, rel=1e-12)
+        assert sigma == pytest.approx(impedance * (k + 0.5) * 10.0, rel=1e-12)

@@ -6,13 +6,9 @@ is the tail).  A ray that crosses another wave continues as a new segment that
 keeps its ``fan``, ``ray_index`` and ``ray_count``; a ray reflected from a
 boundary or interface starts a new one-ray "fan".
 
-``fan_interior`` decides which regions are inside a fan.  (``Region.in_fan`` is
-not used: the engine also sets it for the constant state just ahead of a
-fan's head or behind its tail, e.g. the whole free-surface state behind a
-reflected fan.)  A region is inside a fan when a ray bounds it on the left and a
-ray of the same direction bounds it on the right, and the two rays belong to
-the same fan, or both are one-ray fans (the train of rays reflected from a
-surface, one by one, by an incident fan).
+``fan_interior`` lists the regions inside a fan (``Region.in_fan``, set by the
+engine with ``fronttrack.fronts.inside_fan``: between two rays of one fan, or
+two one-ray fans of one direction).
 """
 
 from __future__ import annotations
@@ -27,28 +23,7 @@ def is_edge_ray(front) -> bool:
 
 def fan_interior(solution) -> set[int]:
     """Ids of the regions inside a fan (see the module docstring)."""
-    on_left: dict[int, list] = defaultdict(list)  # rays bounding a region on its left
-    on_right: dict[int, list] = defaultdict(list)
-    for front in solution.fronts:
-        if front.kind != "ray":
-            continue
-        if front.right_region_id is not None:
-            on_left[front.right_region_id].append(front)
-        if front.left_region is not None:
-            on_right[front.left_region].append(front)
-    interior = set()
-    for region_id, left_rays in on_left.items():
-        for a in left_rays:
-            if any(_same_fan(a, b) for b in on_right.get(region_id, ())):
-                interior.add(region_id)
-                break
-    return interior
-
-
-def _same_fan(a, b) -> bool:
-    if a.direction != b.direction:
-        return False
-    return a.fan == b.fan or (a.ray_count == 1 and b.ray_count == 1)
+    return {region.id for region in solution.regions if region.in_fan}
 
 
 def fan_groups(solution) -> list[list]:
