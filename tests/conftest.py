@@ -13,6 +13,10 @@ Materials (SI units; sigma positive in compression, see PHYSICS.md):
 Fixtures are session-scoped: the materials are immutable apart from their
 internal quadrature caches, and session scope is what lets the hypothesis
 tests use them (hypothesis refuses function-scoped fixtures).
+
+Property tests are derandomised by default, so that a run of the suite (and CI)
+is reproducible; ``pytest --hypothesis-profile=explore`` draws fresh random
+examples, more of them, for hunting new failures.
 """
 
 from __future__ import annotations
@@ -20,8 +24,13 @@ from __future__ import annotations
 import math
 
 import pytest
+from hypothesis import settings
 
 from materials import IdealGas, LinearElastic, MieGruneisen
+
+settings.register_profile("reproducible", derandomize=True)
+settings.register_profile("explore", max_examples=1000)
+settings.load_profile("reproducible")
 
 
 def make_copper() -> MieGruneisen:
