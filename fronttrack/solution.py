@@ -46,20 +46,33 @@ class SpallRecord:
     strength: float
 
 
-@dataclass(frozen=True)
-class History:
-    """A step-function record at one station: ``values[k]`` holds on ``[t[k], t[k+1])``."""
+class StateSeries:
+    """Arrays of the fields of a sequence of states (``self.states``)."""
 
-    t: np.ndarray
-    states: list
+    states: tuple | list
 
     @property
     def sigma(self) -> np.ndarray:
+        """Stress (Pa, compression positive) of each state."""
         return np.array([s.sigma for s in self.states])
 
     @property
     def u(self) -> np.ndarray:
+        """Particle velocity (m/s) of each state."""
         return np.array([s.u for s in self.states])
+
+    @property
+    def rho(self) -> np.ndarray:
+        """Density (kg/m³); zero for a gas expanded into vacuum (infinite volume)."""
+        return np.array([1.0 / s.v for s in self.states])
+
+
+@dataclass(frozen=True)
+class History(StateSeries):
+    """A step-function record at one station: ``values[k]`` holds on ``[t[k], t[k+1])``."""
+
+    t: np.ndarray
+    states: list
 
     def integral(self, values: np.ndarray, t_end: float) -> float:
         """Exact integral of a step quantity from 0 to ``t_end`` (s)."""

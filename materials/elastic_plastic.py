@@ -82,9 +82,8 @@ import math
 from .base import Material, require_number, require_positive
 from .errors import MaterialError, StateOutOfRangeError
 from .state import RIGHT, State
+from .wavecurves import check_curve_arguments
 from .waves import Shock
-
-RELEASE_PATHS = ("isentrope", "hugoniot")
 
 _SNAP = 1e-12
 """A state whose deviator is within this fraction of its stress scale of the yield
@@ -346,10 +345,7 @@ class ElasticPlasticWaveCurve:
 
     def __init__(self, material: ElasticPlastic, ahead: State, direction: int,
                  release: str = "isentrope"):
-        if direction not in (1, -1):
-            raise ValueError(f"direction must be +1 or -1, got {direction!r}")
-        if release not in RELEASE_PATHS:
-            raise ValueError(f"release must be one of {RELEASE_PATHS}, got {release!r}")
+        check_curve_arguments(direction, release)
         self.material = material
         self.ahead = ahead
         self.direction = direction

@@ -41,6 +41,14 @@ from .waves import Fan, Shock
 RELEASE_PATHS = ("isentrope", "hugoniot")
 
 
+def check_curve_arguments(direction: int, release: str) -> None:
+    """Raise ``ValueError`` unless ``direction`` is +1/-1 and ``release`` a known path."""
+    if direction not in (1, -1):
+        raise ValueError(f"direction must be +1 or -1, got {direction!r}")
+    if release not in RELEASE_PATHS:
+        raise ValueError(f"release must be one of {RELEASE_PATHS}, got {release!r}")
+
+
 class HydrodynamicWaveCurve:
     """Wave curve of a material with a convex Hugoniot and isentropic release."""
 
@@ -52,10 +60,7 @@ class HydrodynamicWaveCurve:
     """Riemann integrals remembered per curve (one root search needs a handful)."""
 
     def __init__(self, material, ahead: State, direction: int, release: str = "isentrope"):
-        if direction not in (1, -1):
-            raise ValueError(f"direction must be +1 or -1, got {direction!r}")
-        if release not in RELEASE_PATHS:
-            raise ValueError(f"release must be one of {RELEASE_PATHS}, got {release!r}")
+        check_curve_arguments(direction, release)
         self.material = material
         self.ahead = ahead
         self.direction = direction

@@ -27,6 +27,7 @@ import numpy as np
 
 from materials import State
 
+from ..solution import StateSeries
 from .fans import fan_groups
 
 RESOLUTION = 2000
@@ -40,7 +41,7 @@ MAX_SAMPLES = 40
 
 
 @dataclass(frozen=True)
-class WavePath:
+class WavePath(StateSeries):
     """One wave in state space: ``kind`` shock or fan, its regions and the sampled states."""
 
     kind: str
@@ -48,19 +49,6 @@ class WavePath:
     ahead: int
     behind: int
     states: tuple[State, ...]
-
-    @property
-    def sigma(self) -> np.ndarray:
-        return np.array([s.sigma for s in self.states])
-
-    @property
-    def u(self) -> np.ndarray:
-        return np.array([s.u for s in self.states])
-
-    @property
-    def rho(self) -> np.ndarray:
-        """Density (kg/m³); zero for a gas expanded into vacuum (infinite volume)."""
-        return np.array([1.0 / s.v for s in self.states])
 
 
 def _waves(solution):
