@@ -22,6 +22,7 @@ from pathlib import Path
 
 from materials import MaterialError, NoSolutionError, StateOutOfRangeError, library
 
+from .damage import FractureLimitError
 from .engine import EventLimitError, run
 from .impedance_match import format_table, impedance_match, to_json_dict
 from .scene import SceneError
@@ -29,7 +30,7 @@ from .scene_file import load_scene
 from .units import parse_quantity
 
 USER_ERRORS = (SceneError, MaterialError, StateOutOfRangeError, NoSolutionError,
-               EventLimitError, FileNotFoundError)
+               EventLimitError, FractureLimitError, FileNotFoundError)
 """Errors that are the input's fault: reported on one line, exit status 2."""
 
 

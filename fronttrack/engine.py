@@ -35,6 +35,7 @@ import time
 from characteristics.rays import discretise_fan, ray_count
 from materials import LEFT, RIGHT, Fan, State, solve_boundary, solve_contact
 
+from .damage import run_with_damage
 from .error_estimate import estimate_error
 from .fronts import Front, Region, inside_fan
 from .scene import Scene
@@ -74,8 +75,11 @@ def initial_state(layer) -> State:
 class Engine:
     """Evolves one scene; ``run()`` returns a ``Solution``."""
 
-    def __init__(self, scene: Scene, progress=None):
+    def __init__(self, scene: Scene, progress=None, fractures=()):
+        """``fractures``: ``(x, t)`` points (m, s) at which the material is made to
+        fracture (the failures a cumulative-damage criterion found, ``fronttrack.damage``)."""
         self.scene = scene.validate()
+        self.fractures = tuple(fractures)
         self.acc = scene.accuracy
         self.progress = progress
         self._ids = itertools.count()
@@ -151,6 +155,9 @@ class Engine:
         self.head = left
         for front in fronts:
             self._push_site(front, 0.0)
+        for x, t in self.fractures:
+            if t <= self.t_end:
+                heapq.heappush(self._heap, (t, next(self._seq), "fracture", x, None))
         for boundary, spec in ((left, scene.left), (fronts[-1], scene.right)):
             boundary.boundary_steps = self._boundary_steps(spec, boundary)
 
@@ -237,6 +244,9 @@ class Engine:
         while self._heap:
             entry = heapq.heappop(self._heap)
             t = entry[0]
+            if entry[2] == "fracture":
+                self._fracture(entry[3], t)
+                continue
             if entry[2] == "pair":
                 a, b = entry[3], entry[4]
                 if not (a.alive and b.alive and a.next is b):
@@ -309,9 +319,56 @@ class Engine:
                       incoming, kind)
 
     def _contact_strength(self, site: Front | None, material) -> float:
+        """Tension (Pa) the material or contact at an event can carry.
+
+        Under a cumulative-damage criterion the material itself never fails
+        instantly.  An unbonded contact carries tension up to the negligible
+        stress: a rounding-level tension (a free-surface state is zero only to a
+        few ulps of the stresses that made it) must not open a gap.
+        """
         if site is None or site.kind == "contact":
-            return material.spall_strength
-        return site.strength
+            strength = (material.spall_strength if self.scene.spall_criterion is None
+                        else math.inf)
+        else:
+            strength = site.strength
+        return max(strength, self.negligible)
+
+    def _fracture(self, x: float, t: float) -> None:
+        """Fracture the material at ``(x, t)``: two free surfaces, an opening gap.
+
+        The region there is cut in two at ``x`` and the two halves become the faces
+        of a new gap; each face then reflects as a free surface.  A point on a
+        front, or not in tension, is left alone (the failure found by the damage
+        integration is always inside a tensile region).
+        """
+        before = self.head
+        while before.next is not None and before.next.position(t) <= x:
+            before = before.next
+        after, region = before.next, before.region_right
+        if (after is None or region is None or region.state.sigma >= 0.0
+                or x - before.position(t) <= self.x_tol or after.position(t) - x <= self.x_tol):
+            return
+        x_left, x_right = before.position(t), after.position(t)
+        region.left_points.append((x_left, t))
+        region.right_points.append((x_right, t))
+        region.t_end = t
+        left = self._new_region(region.state, region.material, region.layer, t, (x_left, t),
+                                (x, t))
+        right = self._new_region(region.state, region.material, region.layer, t, (x, t),
+                                 (x_right, t))
+        gap = self._new_front("gap", x, t, bond="unbonded")
+        gap.gap_time, gap.region_right = t, right
+        before.earlier_regions.append((t, region.id))
+        before.region_right = left
+        before.next, gap.prev, gap.next, after.prev = gap, before, after, gap
+        self.spalls.append(SpallRecord(x=x, t=t, tension=-region.state.sigma,
+                                       strength=self.scene.spall_criterion.threshold))
+        material, state = region.material, region.state
+        sol = _combine(solve_boundary(material, state, "right", stress=0.0,
+                                      release=self.acc.release),
+                       solve_boundary(material, state, "left", stress=0.0,
+                                      release=self.acc.release))
+        self._replace([gap], gap, None, sol, left, right, t, x, [], "spall")
 
     def _solve(self, site, region_left, region_right, t, x, incoming, timer):
         """Riemann problem at the event; returns ``(kind, solution, new_site)``."""
@@ -330,14 +387,15 @@ class Engine:
                                      release=release)
             return ("reflection" if incoming else "boundary"), sol, None
         if site is not None and site.kind == "gap":
-            if timer and not incoming:
+            if timer:  # the closure (any wave arriving at that instant joins the impact)
                 site.kind = "interface"
                 site.bond = "unbonded"
                 site.strength = 0.0
                 site.gap_version += 1
                 self._log_site_kind(site, t)
                 sol = solve_contact(region_left.material, region_left.state,
-                                    region_right.material, region_right.state, 0.0, release)
+                                    region_right.material, region_right.state,
+                                    self._contact_strength(site, None), release)
                 return "gap-close", sol, None
             left = solve_boundary(region_left.material, region_left.state, "right", stress=0.0,
                                   release=release)
@@ -620,7 +678,10 @@ def run(scene: Scene, progress=None) -> Solution:
     With ``accuracy.estimate_error`` and fans present, the scene is run again at
     half the ray step and the estimate is added to ``accuracy_report``.
     """
-    solution = Engine(scene, progress).run()
+    if scene.spall_criterion is not None:
+        solution = run_with_damage(scene, Engine, progress)
+    else:
+        solution = Engine(scene, progress).run()
     if scene.accuracy.estimate_error:
         estimate = (estimate_error(solution, run) if solution.stats["rays"] > 0
                     else {"method": "exact: no fans in this solution", "sigma": 0.0, "u": 0.0})

@@ -113,8 +113,49 @@ class Accuracy:
 
 
 @dataclass(frozen=True)
+class SpallCriterion:
+    """Cumulative-damage spall, in place of the materials' instantaneous thresholds.
+
+    Tuler and Butcher (Int. J. Fract. Mech. 4, 431, 1968): a material point
+    fractures when ``integral of (T - threshold)^exponent dt`` over the time its
+    tension ``T = -sigma`` exceeds ``threshold`` (Pa) reaches ``damage``
+    (Pa^exponent s).  ``exponent = 0`` is the incubation-time criterion: the
+    tension must stay beyond the threshold for ``damage`` seconds.  ``stations``
+    is the number of Lagrangian stations per layer at which the damage is
+    integrated exactly (the fracture plane is the first station to fail).
+    """
+
+    threshold: float
+    damage: float
+    exponent: float = 2.0
+    stations: int = 400
+
+    @classmethod
+    def incubation(cls, threshold: float, time: float, stations: int = 400) -> SpallCriterion:
+        """Tension beyond ``threshold`` (Pa) held for ``time`` (s) fractures the point."""
+        return cls(threshold=threshold, damage=time, exponent=0.0, stations=stations)
+
+    def validate(self) -> None:
+        """Raise ``SceneError`` naming the first bad field."""
+        _finite("spall.threshold", self.threshold, "Pa")
+        if self.threshold < 0.0:
+            raise SceneError(f"spall.threshold: must be >= 0 Pa, got {self.threshold!r}")
+        _finite_positive("spall.damage", self.damage, "Pa^exponent s")
+        _finite("spall.exponent", self.exponent, "dimensionless")
+        if not 0.0 <= self.exponent <= 10.0:
+            raise SceneError(f"spall.exponent: must be in 0..10, got {self.exponent!r}")
+        if not (isinstance(self.stations, int) and 2 <= self.stations <= 100_000):
+            raise SceneError(f"spall.stations: must be an integer in 2..100000, "
+                             f"got {self.stations!r}")
+
+
+@dataclass(frozen=True)
 class Scene:
-    """A complete plane-wave scene (SI units)."""
+    """A complete plane-wave scene (SI units).
+
+    ``spall_criterion``, if given, replaces the materials' instantaneous spall
+    thresholds inside every layer by a cumulative-damage criterion.
+    """
 
     layers: tuple[Layer, ...]
     t_end: float
@@ -123,6 +164,7 @@ class Scene:
     probes: tuple[Probe, ...] = ()
     accuracy: Accuracy = field(default_factory=Accuracy)
     title: str = ""
+    spall_criterion: SpallCriterion | None = None
 
     @property
     def length(self) -> float:
@@ -199,6 +241,8 @@ class Scene:
         if not (isinstance(acc.max_events, int) and acc.max_events >= 1):
             raise SceneError(f"accuracy.max_events: must be a positive integer, "
                              f"got {acc.max_events!r}")
+        if self.spall_criterion is not None:
+            self.spall_criterion.validate()
         return self
 
 

@@ -21,6 +21,9 @@ file reads as a lab notebook and converts to the SI ``Scene`` of
     [[probe]]
     name = "rear"
     at = "right"            # "left", "right" or a Lagrangian position
+    [spall]                 # optional cumulative-damage spall (fronttrack.damage):
+    criterion = "tuler-butcher"  # threshold, exponent, damage = "0.05 GPa^2 us"
+                            # or "incubation": threshold, incubation_time = "0.1 us"
 
 A layer's material is a ``[materials.NAME]`` table of the same file (these
 shadow library names) or a library name (``materials.library``).  Unknown keys,
@@ -38,15 +41,27 @@ from typing import Any
 from materials import Material, MaterialError
 from materials.library import FIELD_DIMENSIONS, get, material_from_spec
 
-from .scene import BOUNDARY_KINDS, Accuracy, Boundary, Layer, Probe, Scene, SceneError
+from .scene import (
+    BOUNDARY_KINDS,
+    Accuracy,
+    Boundary,
+    Layer,
+    Probe,
+    Scene,
+    SceneError,
+    SpallCriterion,
+)
 from .units import parse_quantity
 
-_TOP_KEYS = ("title", "t_end", "accuracy", "materials", "layer", "left", "right", "probe")
+_TOP_KEYS = ("title", "t_end", "accuracy", "materials", "layer", "left", "right", "probe",
+             "spall")
 _LAYER_KEYS = ("material", "thickness", "velocity", "stress", "name", "bond")
 _BOUNDARY_KEYS = ("kind", "value", "history")
 _PROBE_KEYS = ("name", "at")
 _ACCURACY_KEYS = ("rays_per_fan", "stress_tolerance", "negligible_stress", "release",
                   "entropy_contacts", "max_events", "spall_spacing", "estimate_error")
+_SPALL_KEYS = ("criterion", "threshold", "exponent", "damage", "incubation_time", "stations")
+_SPALL_CRITERIA = ("tuler-butcher", "incubation")
 _BOUNDARY_DIMENSION = {"velocity": "velocity", "stress": "stress"}
 
 
@@ -83,6 +98,7 @@ def scene_from_dict(doc: dict[str, Any], base_name: str = "") -> Scene:
         probes=probes,
         accuracy=_accuracy(_table(doc.get("accuracy", {}), "accuracy")),
         title=_string(doc, "title", "title", base_name),
+        spall_criterion=_spall(_table(doc["spall"], "spall")) if "spall" in doc else None,
     )
     return scene.validate()
 
@@ -249,9 +265,48 @@ def _accuracy(table: dict[str, Any]) -> Accuracy:
     )
 
 
-def _typed(table: dict[str, Any], key: str, kind: type, default: Any) -> Any:
-    """``accuracy.key`` checked to be of TOML type ``kind`` (a bool is not an int here)."""
+def _typed(table: dict[str, Any], key: str, kind: type, default: Any,
+           path: str = "accuracy") -> Any:
+    """``path.key`` checked to be of TOML type ``kind`` (a bool is not an int here)."""
     value = table.get(key, default)
     if not isinstance(value, kind) or (kind is int and isinstance(value, bool)):
-        raise SceneError(f"accuracy.{key}: expected {kind.__name__}, got {value!r}")
+        expected = getattr(kind, "__name__", "number")
+        raise SceneError(f"{path}.{key}: expected {expected}, got {value!r}")
     return value
+
+
+def _spall(table: dict[str, Any]) -> SpallCriterion:
+    """The ``[spall]`` table: a Tuler–Butcher or incubation-time criterion."""
+    _check_keys(table, _SPALL_KEYS, "spall")
+    criterion = _required(table, "criterion", "spall")
+    if criterion not in _SPALL_CRITERIA:
+        raise SceneError(f"spall.criterion: must be one of {_SPALL_CRITERIA}, "
+                         f"got {criterion!r}")
+    threshold = parse_quantity(_required(table, "threshold", "spall"), "stress",
+                               "spall.threshold")
+    stations = _typed(table, "stations", int, SpallCriterion.stations, "spall")
+    if criterion == "incubation":
+        time = parse_quantity(_required(table, "incubation_time", "spall"), "time",
+                              "spall.incubation_time")
+        return SpallCriterion.incubation(threshold, time, stations)
+    exponent = _typed(table, "exponent", (int, float), SpallCriterion.exponent, "spall")
+    damage = _damage_integral(_required(table, "damage", "spall"), float(exponent))
+    return SpallCriterion(threshold=threshold, damage=damage, exponent=float(exponent),
+                          stations=stations)
+
+
+def _damage_integral(text: Any, exponent: float) -> float:
+    """A Tuler–Butcher constant such as ``"0.05 GPa^2 us"`` in SI (Pa^exponent s)."""
+    parts = text.split() if isinstance(text, str) else []
+    stress_unit, _, power = parts[1].partition("^") if len(parts) == 3 else ("", "", "")
+    try:
+        value, power = float(parts[0]), float(power)
+    except (ValueError, IndexError):
+        value = power = None
+    if value is None or power != exponent:
+        raise SceneError(f"spall.damage: expected a number, a stress unit to the power "
+                         f"spall.exponent ({exponent:g}) and a time unit, for example "
+                         f'"0.05 GPa^{exponent:g} us"; got {text!r}')
+    stress = parse_quantity(f"1 {stress_unit}", "stress", "spall.damage stress unit")
+    time = parse_quantity(f"1 {parts[2]}", "time", "spall.damage time unit")
+    return value * stress**exponent * time
