@@ -47,6 +47,12 @@ multi-layer stack multiply at every crossing of an interface; those weaker than
 a millionth of the peak are dropped (their total is reported) unless the scene
 asks for a smaller ``accuracy.negligible_stress``."""
 
+NEGLIGIBLE_RAY_FRACTION = 1e-3
+"""In a scene with fans the default negligible wave is at least this fraction of
+the stress one ray carries: the fans resolve stress only to a ray step, and the
+echoes a thousand times weaker (left by rays crossing shocks and contacts in a
+ringing plate) would otherwise multiply the events without improving anything."""
+
 ENTROPY_JUMP_TOLERANCE = 1e-12
 """Entropy contacts whose relative volume jump is below this are rounding, never tracked.
 Larger ones are tracked unless they would reflect less than the negligible stress."""
@@ -128,12 +134,11 @@ class Engine:
         states = [initial_state(layer) for layer in scene.layers]
         self.initial_states = states
         self.stress_scale = self._stress_scale(states)
-        self.negligible = (self.acc.negligible_stress if self.acc.negligible_stress is not None
-                           else NEGLIGIBLE_FRACTION * self.stress_scale)
         if self.acc.stress_tolerance is not None:
             self.ray_step = self.acc.stress_tolerance
         else:
             self.ray_step = self.stress_scale / self.acc.rays_per_fan
+        self.negligible = self._default_negligible()
         left = self._new_front("boundary", 0.0, 0.0, side="left")
         fronts = [left]
         x = 0.0
@@ -160,6 +165,19 @@ class Engine:
                 heapq.heappush(self._heap, (t, next(self._seq), "fracture", x, None))
         for boundary, spec in ((left, scene.left), (fronts[-1], scene.right)):
             boundary.boundary_steps = self._boundary_steps(spec, boundary)
+
+    def _default_negligible(self) -> float:
+        """The negligible wave (Pa): the scene's choice, else ``NEGLIGIBLE_FRACTION`` of
+        the stress scale, raised to ``NEGLIGIBLE_RAY_FRACTION`` of a ray step when the
+        scene can make fans (isentropic release of a material that makes them)."""
+        if self.acc.negligible_stress is not None:
+            return self.acc.negligible_stress
+        negligible = NEGLIGIBLE_FRACTION * self.stress_scale
+        fans = self.acc.release == "isentrope" and any(
+            layer.material.makes_fans for layer in self.scene.layers)
+        if fans:
+            negligible = max(negligible, NEGLIGIBLE_RAY_FRACTION * self.ray_step)
+        return negligible
 
     def _stress_scale(self, states: list[State]) -> float:
         """Largest stress the initial Riemann problems produce (Pa): scales rays and thresholds."""

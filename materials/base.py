@@ -86,6 +86,9 @@ class Material(ABC):
     name: str
     rho0: float
     spall_strength: float = math.inf
+    makes_fans: bool = True
+    """Whether isentropic release (or compression) in this model is a centred fan;
+    ``False`` for models whose every wave is a discontinuity."""
 
     @functools.cached_property
     def v0(self) -> float:

@@ -23,6 +23,7 @@ class LinearElastic(AffineEnergyMaterial):
     """Acoustic solid: ``rho0`` (kg/m^3) and longitudinal speed ``C`` (m/s)."""
 
     is_linear = True
+    makes_fans = False
 
     def __init__(self, name: str, rho0: float, C: float, spall_strength: float = math.inf):
         self.name = name
