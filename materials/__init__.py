@@ -8,6 +8,7 @@ about fronts or events.
 from .base import Material
 from .elastic_plastic import ElasticPlastic, ElasticPlasticWaveCurve
 from .errors import MaterialError, NoSolutionError, StateOutOfRangeError
+from .finite_plastic import FinitePlastic, FinitePlasticWaveCurve
 from .ideal_gas import IdealGas
 from .library import available, get, material_from_spec
 from .linear_elastic import LinearElastic
@@ -17,7 +18,8 @@ from .state import LEFT, RIGHT, State
 from .waves import Fan, Shock
 
 __all__ = [
-    "LEFT", "RIGHT", "ElasticPlastic", "ElasticPlasticWaveCurve", "Fan", "IdealGas",
+    "LEFT", "RIGHT", "ElasticPlastic", "ElasticPlasticWaveCurve", "Fan", "FinitePlastic",
+    "FinitePlasticWaveCurve", "IdealGas",
     "LinearElastic", "Material", "MaterialError", "MieGruneisen", "NoSolutionError",
     "RiemannSolution", "Shock", "State", "StateOutOfRangeError", "available", "get",
     "material_from_spec", "solve_boundary", "solve_contact",

@@ -22,6 +22,11 @@ Models and fields (``MODELS``):
   ``yield_strength`` (Pa, the yield stress Y in simple tension); optional
   ``spall_strength``.  The small-strain ideal elastic–plastic solid of
   ``materials.elastic_plastic``.
+- ``"finite-plastic"``: ``rho0``, ``c0``, ``s``, ``gamma0`` (the Mie–Grüneisen
+  pressure), ``yield_strength`` (Pa) and exactly one of ``shear_modulus`` (Pa) or
+  ``poisson`` (with ``K = rho0 c0^2``); optional ``hardening`` (Pa, linear:
+  ``Y = Y0 + H eps_bar``) and ``spall_strength``.  The finite-deformation
+  elastic–plastic solid of ``materials.finite_plastic``.
 
 A solid without ``spall_strength`` never spalls (``math.inf``).  ``description``
 and ``source`` (strings) may accompany any specification and are not used.
@@ -39,6 +44,7 @@ from typing import Any
 from .base import Material, require_positive
 from .elastic_plastic import ElasticPlastic
 from .errors import MaterialError
+from .finite_plastic import FinitePlastic
 from .ideal_gas import IdealGas
 from .linear_elastic import LinearElastic
 from .mie_gruneisen import MieGruneisen
@@ -51,6 +57,9 @@ MODELS: dict[str, dict[str, tuple[str, ...]]] = {
     "ideal-gas": {"required": ("gamma", "rho0"), "optional": ("cv",)},
     "elastic-plastic": {"required": ("rho0", "lambda", "mu", "yield_strength"),
                         "optional": ("spall_strength",)},
+    "finite-plastic": {"required": ("rho0", "c0", "s", "gamma0", "yield_strength"),
+                       "optional": ("shear_modulus", "poisson", "hardening",
+                                    "spall_strength")},
 }
 """Numeric fields of each model (a linear-elastic solid also needs one of its
 stiffness choices, see ``_LINEAR_ELASTIC_CHOICES``)."""
@@ -62,6 +71,7 @@ FIELD_DIMENSIONS: dict[str, str] = {
     "cv": "specific_heat", "spall_strength": "stress", "up_max": "velocity",
     "C": "velocity", "lambda": "stress", "mu": "stress", "E": "stress",
     "poisson": "dimensionless", "gamma": "dimensionless", "yield_strength": "stress",
+    "shear_modulus": "stress", "hardening": "stress",
 }
 """Physical dimension of every numeric specification field, for readers of files
 that write quantities with units (the dimension names of ``fronttrack.units``)."""
@@ -175,7 +185,24 @@ def material_from_spec(name: str, spec: dict[str, Any]) -> Material:
         return ElasticPlastic(name, values["rho0"], values["lambda"], values["mu"],
                               values["yield_strength"],
                               spall_strength=values.get("spall_strength", math.inf))
+    if model == "finite-plastic":
+        return _finite_plastic(name, values)
     return IdealGas(name, values["gamma"], values["rho0"], cv=values.get("cv"))
+
+
+def _finite_plastic(name: str, values: dict[str, float]) -> FinitePlastic:
+    """A finite-deformation elastic–plastic solid with ``shear_modulus`` or ``poisson``."""
+    given = [field for field in ("shear_modulus", "poisson") if field in values]
+    if len(given) != 1:
+        raise MaterialError(f"{name}: a finite-plastic material needs exactly one of "
+                            f"shear_modulus or poisson; got {', '.join(given) or 'neither'}")
+    args = (values["rho0"], values["c0"], values["s"], values["gamma0"])
+    rest = {"hardening": values.get("hardening", 0.0),
+            "spall_strength": values.get("spall_strength", math.inf)}
+    if given[0] == "poisson":
+        return FinitePlastic.from_poisson(name, *args, values["poisson"],
+                                          values["yield_strength"], **rest)
+    return FinitePlastic(name, *args, values["shear_modulus"], values["yield_strength"], **rest)
 
 
 def _number(name: str, field: str, value: Any) -> float:
