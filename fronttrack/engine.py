@@ -27,13 +27,14 @@ than the negligible stress are dropped and their total is reported.
 
 from __future__ import annotations
 
+import dataclasses
 import heapq
 import itertools
 import math
 import time
 
 from characteristics.rays import discretise_fan, ray_count
-from materials import LEFT, RIGHT, Fan, State, solve_boundary, solve_contact
+from materials import LEFT, RIGHT, Fan, NoSolutionError, State, solve_boundary, solve_contact
 
 from .damage import run_with_damage
 from .error_estimate import estimate_error
@@ -46,6 +47,13 @@ NEGLIGIBLE_FRACTION = 1e-6
 multi-layer stack multiply at every crossing of an interface; those weaker than
 a millionth of the peak are dropped (their total is reported) unless the scene
 asks for a smaller ``accuracy.negligible_stress``."""
+
+NEGLIGIBLE_SPLIT_FRACTION = 1e-3
+"""In a scene with elastic–plastic solids (``Material.splits_waves``) the default
+negligible wave is at least this fraction of the stress scale: every interaction
+there splits waves into elastic and plastic parts, so their number grows
+geometrically with time, and the ones below a thousandth of the peak are dropped
+(their total is reported)."""
 
 NEGLIGIBLE_RAY_FRACTION = 1e-3
 """In a scene with fans the default negligible wave is at least this fraction of
@@ -169,7 +177,8 @@ class Engine:
     def _default_negligible(self) -> float:
         """The negligible wave (Pa): the scene's choice, else ``NEGLIGIBLE_FRACTION`` of
         the stress scale, raised to ``NEGLIGIBLE_RAY_FRACTION`` of a ray step when the
-        scene can make fans (isentropic release of a material that makes them)."""
+        scene can make fans (isentropic release of a material that makes them) and to
+        ``NEGLIGIBLE_SPLIT_FRACTION`` of the scale when a solid splits waves."""
         if self.acc.negligible_stress is not None:
             return self.acc.negligible_stress
         negligible = NEGLIGIBLE_FRACTION * self.stress_scale
@@ -177,6 +186,8 @@ class Engine:
             layer.material.makes_fans for layer in self.scene.layers)
         if fans:
             negligible = max(negligible, NEGLIGIBLE_RAY_FRACTION * self.ray_step)
+        if any(layer.material.splits_waves for layer in self.scene.layers):
+            negligible = max(negligible, NEGLIGIBLE_SPLIT_FRACTION * self.stress_scale)
         return negligible
 
     def _stress_scale(self, states: list[State]) -> float:
@@ -217,6 +228,9 @@ class Engine:
         impedance = layer.material.rho0 * layer.material.sound_speed(layer.material.v0, 0.0)
         steps = []
         for (t0, y0), (t1, y1) in zip(spec.history[:-1], spec.history[1:], strict=True):
+            if t1 == t0:  # a step
+                steps.append((t1, y1))
+                continue
             jump = abs(y1 - y0) * (impedance if spec.kind == "velocity" else 1.0)
             count = max(1, math.ceil(jump / self.ray_step)) if jump > 0 else 0
             for k in range(count):
@@ -432,11 +446,18 @@ class Engine:
         new_site = None
         if (sol.separated and (site is None or site.kind == "contact")
                 and self._near_spall(x, region_left.layer)):
-            # inside the zone of an earlier fracture: carried as tension, and reported
-            self.suppressed_spalls += 1
-            self.suppressed_tension = max(self.suppressed_tension, -sol.bonded_sigma)
-            sol = solve_contact(region_left.material, region_left.state, region_right.material,
-                                region_right.state, math.inf, release)
+            # inside the zone of an earlier fracture: carried as tension, and reported,
+            # unless the tension would leave the equations of state (then it fractures)
+            try:
+                carried = solve_contact(region_left.material, region_left.state,
+                                        region_right.material, region_right.state, math.inf,
+                                        release)
+            except NoSolutionError:
+                carried = None
+            if carried is not None:
+                self.suppressed_spalls += 1
+                self.suppressed_tension = max(self.suppressed_tension, -sol.bonded_sigma)
+                sol = carried
         if sol.separated:
             if site is None or site.kind == "contact":
                 kind = "spall"
@@ -680,9 +701,12 @@ def _combine(left_solution, right_solution):
 
 
 def _merged(a: State, b: State) -> State:
-    """One state standing for two that differ negligibly (mean of each field)."""
-    return State(sigma=0.5 * (a.sigma + b.sigma), u=0.5 * (a.u + b.u), v=0.5 * (a.v + b.v),
-                 e=0.5 * (a.e + b.e), plastic_strain=0.5 * (a.plastic_strain + b.plastic_strain))
+    """One state standing for two that differ negligibly (mean of each numeric field;
+    ``a``'s type is kept, so a model's extra state fields survive)."""
+    shared = {f.name for f in dataclasses.fields(b)}
+    means = {f.name: 0.5 * (getattr(a, f.name) + getattr(b, f.name))
+             for f in dataclasses.fields(a) if f.name in shared}
+    return dataclasses.replace(a, **means)
 
 
 def _interaction_kind(incoming) -> str:

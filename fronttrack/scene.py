@@ -54,7 +54,9 @@ class Boundary:
     ``kind``: ``"free"`` (sigma = 0), ``"wall"`` (u = 0), ``"velocity"`` or
     ``"stress"`` (a prescribed history).  ``history`` is a tuple of ``(t, value)``
     points (s, and m/s or Pa), linear in between and constant after the last
-    point; one point means a constant value.
+    point; one point means a constant value.  Two points at one time make a
+    step (a square pulse is ``(0, P), (tau, P), (tau, 0)``): the later value holds
+    from that time on.
     """
 
     kind: str = "free"
@@ -67,10 +69,11 @@ class Boundary:
         points = self.history
         if t <= points[0][0]:
             return points[0][1]
-        for (t0, y0), (t1, y1) in zip(points[:-1], points[1:], strict=True):
-            if t <= t1:
-                return y0 + (y1 - y0) * (t - t0) / (t1 - t0)
-        return points[-1][1]
+        last = max(i for i, (ti, _) in enumerate(points) if ti <= t)
+        if last == len(points) - 1:
+            return points[-1][1]
+        (t0, y0), (t1, y1) = points[last], points[last + 1]
+        return y0 + (y1 - y0) * (t - t0) / (t1 - t0)
 
 
 @dataclass(frozen=True)
@@ -96,8 +99,8 @@ class Accuracy:
     material (neglecting them changes volume and energy, never stress or
     velocity).  ``max_events``: stop with an error beyond this many events.
     ``spall_spacing`` (m): no new spall plane closer than this to an earlier one
-    (the tension there is carried and reported); ``None`` means 10 % of the
-    layer's thickness, 0 allows any spacing.  ``estimate_error``: run the scene
+    (the tension there is carried and reported, unless it would leave the
+    equations of state); ``None`` or 0 allows any spacing.  ``estimate_error``: run the scene
     again at half the ray step and report the estimated error of the records
     (``fronttrack.error_estimate``) when it has fans.
     """
@@ -205,9 +208,12 @@ class Scene:
                                      f"needs a value or a history")
                 times = [t for t, _ in boundary.history]
                 steps = zip(times[:-1], times[1:], strict=True)
-                if times[0] < 0.0 or any(b <= a for a, b in steps):
+                triples = zip(times[:-2], times[2:], strict=True)
+                if (times[0] < 0.0 or any(b < a for a, b in steps)
+                        or any(a == c for a, c in triples)):
                     raise SceneError(f"{side}.history: times must start at >= 0 s and "
-                                     f"increase strictly, got {times}")
+                                     f"increase (two equal times make a step, three may "
+                                     f"not), got {times}")
                 for t, value in boundary.history:
                     _finite(f"{side}.history time", t, "s")
                     _finite(f"{side}.history value", value, "SI")

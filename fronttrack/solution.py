@@ -256,8 +256,13 @@ class Solution:
         return total
 
     def max_tension(self) -> dict | None:
-        """Largest tension reached in any region: ``{"sigma", "x", "t"}`` (Pa, m, s)."""
-        if self.min_stress is None or self.min_stress[0] >= 0.0:
+        """Largest tension reached in any region: ``{"sigma", "x", "t"}`` (Pa, m, s).
+
+        ``None`` when no region is in tension beyond the negligible stress (a
+        rounding-level tension of a few ulps is not a tension).
+        """
+        negligible = self.accuracy_report.get("negligible_stress", 0.0)
+        if self.min_stress is None or self.min_stress[0] >= -negligible:
             return None
         sigma, x, t = self.min_stress
         return {"sigma": sigma, "x": x, "t": t}

@@ -89,6 +89,9 @@ class Material(ABC):
     makes_fans: bool = True
     """Whether isentropic release (or compression) in this model is a centred fan;
     ``False`` for models whose every wave is a discontinuity."""
+    splits_waves: bool = False
+    """Whether one wave of this model can split into several (an elastic precursor
+    and a plastic wave): such solids multiply waves at every interaction."""
 
     @functools.cached_property
     def v0(self) -> float:

@@ -212,6 +212,7 @@ class FinitePlastic(Material):
     """
 
     is_linear = False
+    splits_waves = True
 
     def __init__(self, name: str, rho0: float, c0: float, s: float, gamma0: float,
                  shear_modulus: float, yield_strength: float, hardening: float = 0.0,

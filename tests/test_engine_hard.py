@@ -204,3 +204,20 @@ def test_ramped_velocity_boundary_applies_every_step():
         # step k holds the ramp's value at the middle of its sub-interval
         assert t == pytest.approx(arrival + k * 0.1e-6, rel=1e-12)
         assert sigma == pytest.approx(impedance * (k + 0.5) * 10.0, rel=1e-12)
+
+
+def test_square_stress_pulse_from_two_points_at_one_time():
+    """``(0, P), (tau, P), (tau, 0)`` is a square pulse: one step up at 0, one down at tau;
+    three points at one time are refused with the field named."""
+    bar = LinearElastic("bar", rho0=2700.0, C=5000.0)
+    pulse = Boundary("stress", ((0.0, 1e9), (0.2e-6, 1e9), (0.2e-6, 0.0)))
+    assert pulse.value_at(0.2e-6 - 1e-15) == 1e9 and pulse.value_at(0.2e-6) == 0.0
+    scene = Scene(layers=(Layer(bar, 5e-3),), t_end=0.9e-6, left=pulse,
+                  probes=(Probe("station", 2e-3),))
+    history = run(scene).history("station")
+    assert list(history.t) == pytest.approx([0.0, 0.4e-6, 0.6e-6], rel=1e-12)
+    assert list(history.sigma) == pytest.approx([0.0, 1e9, 0.0], abs=1e-3)
+    assert history.u[1] == pytest.approx(1e9 / (2700.0 * 5000.0), rel=1e-12)
+    triple = Boundary("stress", ((0.0, 1e9), (0.2e-6, 1e9), (0.2e-6, 0.0), (0.2e-6, 1.0)))
+    with pytest.raises(SceneError, match=r"left\.history"):
+        Scene(layers=(Layer(bar, 5e-3),), t_end=1e-6, left=triple).validate()

@@ -285,8 +285,8 @@ def test_unknown_keys_are_named(doc, fragments):
     (doc_with(right={"kind": "stress", "history": [["0 us", "1 m/s"]]}),
      ['right.history[0] value: unknown unit "m/s"']),
     (doc_with(right={"kind": "stress", "history": []}), ["right.history: expected a list"]),
-    (doc_with(right={"kind": "stress", "history": [["1 us", "1 GPa"], ["1 us", "2 GPa"]]}),
-     ["right.history: times must start at >= 0 s and increase strictly"]),
+    (doc_with(right={"kind": "stress", "history": [["2 us", "1 GPa"], ["1 us", "2 GPa"]]}),
+     ["right.history: times must start at >= 0 s and increase"]),
     (doc_with(probe=[{"name": "p"}]), ["probe[0].at: missing"]),
     (doc_with(probe=[{"at": "left"}]), ["probe[0].name: missing"]),
     (doc_with(probe=[{"name": "p", "at": "middle"}]), ['probe[0].at: expected a number and a '
