@@ -120,7 +120,6 @@ def xt_su_figure(solution, title: str, size=(13.0, 6.6), bottom: float = 0.17,
     ax_su = figure.add_subplot(grid[0, 1])
     plot_xt(solution, ax=ax_xt)
     plot_sigma_u(solution, ax=ax_su, numbers=placed_labels(ax_xt))
-    tidy_colorbar(ax_xt, solution)
     ax_xt.set_title("X–t diagram (Lagrangian), regions shaded by stress", fontsize=10,
                     pad=_title_pad(ax_xt))
     ax_su.set_title("σ–u diagram: the same numbered states", fontsize=10,
@@ -144,7 +143,6 @@ def xt_su_record_figure(solution, title: str, size=(13.0, 8.6), bottom: float = 
     ax_record = figure.add_subplot(grid[1, 1])
     plot_xt(solution, ax=ax_xt)
     plot_sigma_u(solution, ax=ax_su, numbers=placed_labels(ax_xt))
-    tidy_colorbar(ax_xt, solution)
     ax_xt.set_title("X–t diagram (Lagrangian), regions shaded by stress", fontsize=10,
                     pad=_title_pad(ax_xt))
     ax_su.set_title("σ–u diagram: the same numbered states", fontsize=10)
@@ -161,7 +159,6 @@ def xt_record_figure(solution, title: str, size=(13.0, 6.8), bottom: float = 0.2
     ax_xt = figure.add_subplot(grid[0, 0])
     ax_record = figure.add_subplot(grid[0, 1])
     plot_xt(solution, ax=ax_xt, numbers=numbers)
-    tidy_colorbar(ax_xt, solution)
     ax_xt.set_title("X–t diagram (Lagrangian), regions shaded by stress", fontsize=10,
                     pad=_title_pad(ax_xt))
     figure.suptitle(title, fontsize=12, y=0.985)
@@ -173,21 +170,6 @@ def plot_record(ax, edges, values, label=None, color=BLUE, **kwargs):
     ax.stairs(values, edges, baseline=None, color=color, lw=kwargs.pop("lw", 1.5),
               label=label, **kwargs)
     ax.grid(True, lw=0.3, alpha=0.5)
-
-
-def tidy_colorbar(ax_xt, solution, fraction: float = 1e-3) -> None:
-    """Show only the compressive half of an X–t colorbar when the tension is negligible.
-
-    ``plot_xt`` shows the tension half (down to 5 % of the peak) as soon as any
-    region is below zero, even by a few kPa of fan-discretisation rounding; this
-    hides it when the largest tension is below ``fraction`` of the peak stress.
-    """
-    sigma = [r.state.sigma for r in solution.regions]
-    if min(sigma) >= -fraction * max(sigma):
-        for cax in ax_xt.figure.axes:
-            bar = getattr(cax, "_colorbar", None)
-            if bar is not None and bar.mappable.axes is ax_xt:
-                cax.set_ylim(0.0, bar.norm.vmax)
 
 
 def _title_pad(ax) -> float:

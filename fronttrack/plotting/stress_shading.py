@@ -58,5 +58,7 @@ def shade_regions(ax, solution, polygons: dict) -> None:
     bar.set_label("stress σ (GPa), compression > 0")
     bar.set_ticks(stress_ticks(norm))
     bar.ax.yaxis.set_major_formatter(FormatStrFormatter("%g"))
-    if min(sigma.values()) >= 0.0:
-        bar.ax.set_ylim(0.0, norm.vmax)  # no tension anywhere: show the compressive half only
+    negligible = solution.accuracy_report.get("negligible_stress", 0.0) * GPA
+    if min(sigma.values()) >= -negligible:
+        # no tension beyond the negligible stress (rounding): the compressive half only
+        bar.ax.set_ylim(0.0, norm.vmax)
