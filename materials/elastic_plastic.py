@@ -82,7 +82,7 @@ import math
 from .base import Material, require_number, require_positive
 from .errors import MaterialError, StateOutOfRangeError
 from .state import RIGHT, State
-from .wavecurves import check_curve_arguments
+from .wavecurves import StressRange, check_curve_arguments
 from .waves import Shock
 
 _SNAP = 1e-12
@@ -324,7 +324,7 @@ class ElasticPlastic(Material):
         return ElasticPlasticWaveCurve(self, ahead, direction, release)
 
 
-class ElasticPlasticWaveCurve:
+class ElasticPlasticWaveCurve(StressRange):
     """Wave curve of an ``ElasticPlastic`` solid: elastic precursor plus plastic shock.
 
     From the ahead state ``a`` with yield stresses ``low <= sigma_a <= high``
@@ -372,15 +372,6 @@ class ElasticPlasticWaveCurve:
     def sigma_min(self) -> float:
         """Stress at the largest volume of the model's range (a tension)."""
         return min(self.at_volume(self.material.volume_range()[1])[0], self.ahead.sigma)
-
-    def check_stress(self, sigma: float) -> None:
-        """Raise ``StateOutOfRangeError`` if ``sigma`` is beyond the curve's range."""
-        low, high = self.sigma_limits()
-        if not low <= sigma <= high:
-            raise StateOutOfRangeError(
-                f"{self.material.name}: stress {sigma / 1e9:.6g} GPa is outside the range "
-                f"reachable from {self.ahead.sigma / 1e9:.6g} GPa inside its volume range "
-                f"({low / 1e9:.6g} to {high / 1e9:.6g} GPa)")
 
     # --- the curve ----------------------------------------------------------------------
     def _knee(self, sigma: float) -> float:

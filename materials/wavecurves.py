@@ -49,7 +49,22 @@ def check_curve_arguments(direction: int, release: str) -> None:
         raise ValueError(f"release must be one of {RELEASE_PATHS}, got {release!r}")
 
 
-class HydrodynamicWaveCurve:
+class StressRange:
+    """The range check every wave curve shares; the curve provides ``sigma_limits()``,
+    ``material`` and ``ahead``."""
+
+    def check_stress(self, sigma: float) -> None:
+        """Raise ``StateOutOfRangeError`` if ``sigma`` is beyond the curve's range."""
+        low, high = self.sigma_limits()
+        if not low <= sigma <= high:
+            raise StateOutOfRangeError(
+                f"{self.material.name}: stress {sigma / 1e9:.6g} GPa is outside the range "
+                f"reachable from {self.ahead.sigma / 1e9:.6g} GPa inside its equation of state "
+                f"({low / 1e9:.6g} to {high / 1e9:.6g} GPa)"
+            )
+
+
+class HydrodynamicWaveCurve(StressRange):
     """Wave curve of a material with a convex Hugoniot and isentropic release."""
 
     _WEAK_JUMP = 1e-5
@@ -134,15 +149,6 @@ class HydrodynamicWaveCurve:
             lo, hi = (mid, hi) if valid(mid) else (lo, mid)
         return lo
 
-    def check_stress(self, sigma: float) -> None:
-        """Raise ``StateOutOfRangeError`` if ``sigma`` is beyond the curve's range."""
-        low, high = self.sigma_limits()
-        if not low <= sigma <= high:
-            raise StateOutOfRangeError(
-                f"{self.material.name}: stress {sigma / 1e9:.6g} GPa is outside the range "
-                f"reachable from {self.ahead.sigma / 1e9:.6g} GPa inside its equation of state "
-                f"({low / 1e9:.6g} to {high / 1e9:.6g} GPa)"
-            )
 
     # --- the curve ------------------------------------------------------------
     def _volume(self, sigma: float) -> float:
