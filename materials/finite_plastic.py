@@ -82,16 +82,17 @@ stress is a function of the strain alone and the construction is exact).
 
 Engine fans
 -----------
-``characteristics.rays.discretise_fan`` takes ray speeds from
-``material.sound_speed(state.v, state.e)``; the speed of this solid depends on
-its deviator (plastic strain) and on whether the fan is elastic or plastic,
-which ``(v, e)`` cannot tell.  The states that this module hands out (wave
-states, fan ends) therefore carry their characteristic speed on their volume
-(a ``float`` subclass, equal to the plain volume in every other respect), and
-``sound_speed`` reads it.  Untagged ``(v, e)`` get the elastic speed of the
-virgin material with its deviator clamped to the yield surface.  See
-``FinitePlasticWaveCurve.characteristic_speed`` for the clean interface an
-engine could call instead.
+The characteristic speed of this solid depends on its deviator (plastic strain)
+and on whether the path is elastic or plastic, which ``(v, e)`` cannot tell.
+``characteristics.rays.discretise_fan`` therefore takes the ray speeds of a fan
+from its wave curve: ``FinitePlasticWaveCurve.characteristic_speed(sigma)`` for
+the states inside the fan and the fan's own ``head_speed``/``tail_speed`` at its
+ends (the yield point between an elastic and a plastic release fan is the tail
+of one at the elastic speed and the head of the other at the plastic speed).
+States are plain ``State``/``HardenedState`` values.  ``sound_speed(v, e)`` is
+only a state-free estimate (an impedance scale for guesses and tolerances): the
+elastic speed of the virgin material at ``(v, e)`` with its deviator clamped to
+the yield surface.
 """
 
 from __future__ import annotations
@@ -127,18 +128,9 @@ _SINGULARITY_FRACTION = 0.4
 
 _MAX_KNOWN_INTEGRALS = 16
 
-
-class _Volume(float):
-    """A specific volume (m^3/kg) that also carries the characteristic speed (m/s) of the
-    branch its state lies on; arithmetic on it gives plain floats."""
-
-    __slots__ = ("speed",)
-
-
-def _tag(state: State, speed: float) -> State:
-    volume = _Volume(state.v)
-    volume.speed = float(speed)
-    return dataclasses.replace(state, v=volume)
+_MAX_FAN_SPEEDS = 1024
+"""Characteristic speeds of fan states a wave curve remembers (``characteristic_speed``
+after ``state_at``, as the rays of a fan ask them)."""
 
 
 _PHI_SERIES = 0.1
@@ -379,11 +371,16 @@ class FinitePlastic(Material):
         return self.stress_at(v, e, 0.0)
 
     def sound_speed(self, v: float, e: float) -> float:
-        """Characteristic speed (m/s) carried by a state this module made (see module
-        docstring); otherwise the elastic speed of the virgin material at ``(v, e)``."""
-        speed = getattr(v, "speed", None)
-        if speed is not None:
-            return speed
+        """Elastic longitudinal speed (m/s) of the virgin material at ``(v, e)``.
+
+        ``C_e = sqrt(C_MG^2(v, e_h) + 4G/(3 rho0))`` with ``e_h = e - W(S)`` and the
+        deviator of the virgin material, ``S = (4/3) G eps``, clamped to the yield
+        surface ``|S| <= 2 Y0/3``.  ``(v, e)`` do not determine the state of this solid
+        (the plastic strain is a history variable) nor the branch a wave follows, so
+        this is a scale, exact for the virgin material inside its elastic range.  The
+        characteristics of fans come from ``FinitePlasticWaveCurve.characteristic_speed``
+        and the fan's head and tail speeds (``characteristics.rays.discretise_fan``).
+        """
         limit = 2.0 * self.yield_strength / 3.0
         s = min(max(4.0 * self.shear_modulus * self.strain(v) / 3.0, -limit), limit)
         return self.elastic_speed(float(v), e - self.shear_energy(s))
@@ -481,6 +478,7 @@ class FinitePlasticWaveCurve:
         self._limits: tuple[float, float] | None = None
         self._last: tuple[float, tuple] | None = None
         self._last_states: tuple[float, tuple] | None = None
+        self._fan_speeds: dict[float, float] = {}
         self._integrals: dict[str, list] = {}
         g, r = mat.shear_modulus, self._radius
         if math.isfinite(r):
@@ -836,36 +834,49 @@ class FinitePlasticWaveCurve:
         return g0 + g, slope
 
     def _states(self, sigma: float) -> tuple[State | None, State]:
-        """``(state at the knee or None, state behind)``, with their velocities and tagged
-        with their characteristic speeds (the knee with that of the branch beyond it)."""
+        """``(state at the knee or None, state behind)``, with their velocities."""
         cached = self._last_states
         if cached is not None and cached[0] == sigma:
             return cached[1]
         a, d, mat = self.ahead, self.direction, self.material
         point, knee, kind = self._solve(sigma)
         g, _ = self.velocity_change(sigma)
-        behind = _tag(point.state(a.u + d * g, mat), self.characteristic_speed(sigma))
+        behind = point.state(a.u + d * g, mat)
+        if kind == "fan":   # remembered for the rays through the states of a fan
+            if len(self._fan_speeds) >= _MAX_FAN_SPEEDS:
+                self._fan_speeds.clear()
+            self._fan_speeds[sigma] = point.speed
         knee_state = None
         if knee is not None:
             g_knee = self._g_high if sigma > a.sigma else self._g_low
-            s = mat.deviator_at(knee.v, knee.plastic_strain)
-            speed = mat.plastic_speed(knee.v, knee.e - mat.shear_energy(s), s)
-            knee_state = _tag(knee.state(a.u + d * g_knee, mat), speed)
+            knee_state = knee.state(a.u + d * g_knee, mat)
         self._last_states = (sigma, (knee_state, behind))
         return knee_state, behind
 
     def state_at(self, sigma: float) -> State:
-        """The state behind the wave that reaches ``sigma``, tagged with its branch speed."""
+        """The state behind the wave that reaches ``sigma``."""
         if sigma == self.ahead.sigma:
             return self.ahead
         return self._states(sigma)[1]
 
     def characteristic_speed(self, sigma: float) -> float:
-        """Speed (m/s, unsigned) of the characteristic of this curve's wave at ``sigma``:
-        the elastic speed inside the elastic range, the plastic one beyond it (what
-        ``discretise_fan`` should use for the rays of this curve's fans)."""
+        """Speed (m/s, unsigned, Lagrangian) of the characteristic through the state of
+        stress ``sigma`` on this curve: ``C = v0 sqrt(-dsigma/dv)`` along the path there.
+
+        Along the release path (the fans) this is ``C_e`` on the elastic isentrope
+        down to reverse yield and ``C_p`` on the plastic path beyond; on the loading
+        (shock) side, the elastic speed inside the elastic range and the plastic one
+        beyond it.  At the ahead state it is the elastic ``head_speed``; at the yield
+        point itself it is the elastic speed (the end of the elastic branch): the
+        plastic fan that starts there carries its own ``head_speed``.  This is what
+        ``characteristics.rays.discretise_fan`` uses for the rays inside this curve's
+        fans.
+        """
         if sigma == self.ahead.sigma:
             return self.head_speed
+        speed = self._fan_speeds.get(sigma)
+        if speed is not None:
+            return speed
         point, knee, kind = self._solve(sigma)
         if kind == "fan":
             return point.speed
@@ -883,21 +894,18 @@ class FinitePlasticWaveCurve:
         point, knee_point, kind = self._solve(sigma)
         knee, behind = self._states(sigma)
         if kind == "fan":
-            behind_tag = behind
             if knee is None:
-                return (Fan(ahead=_tag(a, self.head_speed), behind=behind_tag,
-                            head_speed=d * self.head_speed, tail_speed=d * point.speed,
-                            direction=d, curve=self),)
-            k_el = _tag(knee, self._knee_down.speed)
+                return (Fan(ahead=a, behind=behind, head_speed=d * self.head_speed,
+                            tail_speed=d * point.speed, direction=d, curve=self),)
+            # the yield point ends the elastic fan (elastic speed) and starts the plastic
+            # one (plastic speed): one state, two characteristic speeds
             k_pl_speed = mat.plastic_speed(knee.v, knee.e - mat.shear_energy(
                 -self._radius), -self._radius)
-            k_pl = _tag(knee, k_pl_speed)
             waves = []
             if self._knee_down is not self._start:
-                waves.append(Fan(ahead=_tag(a, self.head_speed), behind=k_el,
-                                 head_speed=d * self.head_speed,
+                waves.append(Fan(ahead=a, behind=knee, head_speed=d * self.head_speed,
                                  tail_speed=d * self._knee_down.speed, direction=d, curve=self))
-            waves.append(Fan(ahead=k_pl, behind=behind_tag, head_speed=d * k_pl_speed,
+            waves.append(Fan(ahead=knee, behind=behind, head_speed=d * k_pl_speed,
                              tail_speed=d * point.speed, direction=d, curve=self))
             return tuple(waves)
         if knee is None or knee_point is self._start:

@@ -299,23 +299,71 @@ def test_rigid_wall_reflection(jump_conditions):
 
 
 # --- energy ------------------------------------------------------------------------------------
+def _fan_speeds(fan, count):
+    """Characteristic speeds (m/s) at the ``count + 1`` states of a fan, as the rays use
+    them: the fan's own head and tail speeds at its ends, the curve's inside."""
+    inner = [fan.curve.characteristic_speed(s.sigma) for s in fan.states(count)[1:-1]]
+    return np.array([abs(fan.head_speed), *inner, abs(fan.tail_speed)])
+
+
 def test_fans_follow_de_equals_minus_sigma_dv_and_du_equals_dsigma_over_impedance():
+    from characteristics.rays import discretise_fan
+
     a = loaded(12e9)
     curve = AL.wave_curve(a, LEFT)
     elastic, plastic = curve.waves(-0.5e9)
+    assert elastic.behind is plastic.ahead       # one state at the knee, two speeds
+    assert -elastic.tail_speed > -plastic.head_speed
     for fan in (elastic, plastic):
         states = fan.states(400)
         v = np.array([float(s.v) for s in states])
         sig = np.array([s.sigma for s in states])
         e = np.array([s.e for s in states])
         u = np.array([s.u for s in states])
-        c = np.array([AL.sound_speed(s.v, s.e) for s in states])   # what the rays use
+        c = _fan_speeds(fan, 400)
         work = -np.sum(0.5 * (sig[1:] + sig[:-1]) * np.diff(v))
         assert e[-1] - e[0] == pytest.approx(work, rel=1e-5)
         du = -np.sum(0.5 * (1 / c[1:] + 1 / c[:-1]) * np.diff(sig)) / RHO   # left-going
         assert u[-1] - u[0] == pytest.approx(du, rel=1e-5)
-        assert c[0] == -fan.head_speed and c[-1] == -fan.tail_speed
-        assert c[5] == curve.characteristic_speed(states[5].sigma)
+        # C = v0 sqrt(-dsigma/dv) along the path
+        slope = np.gradient(sig, v)
+        assert c[1:-1] == pytest.approx(V0 * np.sqrt(-slope[1:-1]), rel=1e-5)
+        assert np.all(np.diff(c) < 0.0)              # a spreading fan
+        # the rays move at the mean speeds of their neighbouring states
+        rays = discretise_fan(fan, AL, 400)
+        assert [r.ahead for r in rays] == states[:-1] and rays[-1].behind == fan.behind
+        assert [r.speed for r in rays] == pytest.approx(-0.5 * (c[1:] + c[:-1]), rel=1e-15)
+
+
+def test_rays_of_an_elastic_release_fan_are_between_its_head_and_tail():
+    from characteristics.rays import discretise_fan
+
+    for start in (loaded(0.8 * AL.hel), loaded(12e9)):
+        fan = AL.wave_curve(start, LEFT).waves(start.sigma - 0.5 * AL.hel)[0]
+        assert isinstance(fan, Fan) and fan.behind.plastic_strain == start.plastic_strain
+        head, tail = -fan.head_speed, -fan.tail_speed
+        assert head > tail > 0.0
+        for count in (1, 2, 7):
+            speeds = [-r.speed for r in discretise_fan(fan, AL, count)]
+            assert all(head > c > tail for c in speeds) and speeds == sorted(speeds)[::-1]
+        assert 0.0 < head - speeds[0] < (head - tail) / 7    # half a ray step from the head
+        assert -discretise_fan(fan, AL, 1)[0].speed == 0.5 * (head + tail)
+    # the plastic fan that follows the knee: plastic speeds, below the elastic ones
+    elastic, plastic = AL.wave_curve(start, LEFT).waves(0.0)
+    rays = discretise_fan(plastic, AL, 5)
+    assert all(-plastic.head_speed > -r.speed > -plastic.tail_speed for r in rays)
+    assert -rays[0].speed < -discretise_fan(elastic, AL, 5)[-1].speed
+
+
+def test_sound_speed_is_the_clamped_elastic_speed_of_the_virgin_material():
+    assert AL.sound_speed(V0, 0.0) == pytest.approx(AL.C_elastic, rel=1e-14)
+    a = loaded(12e9)
+    s = 2.0 * Y / 3.0                                      # clamped deviator
+    assert AL.sound_speed(a.v, a.e) == AL.elastic_speed(a.v, a.e - AL.shear_energy(s))
+    # the same (v, e) on a different branch or as a float subclass: the same answer
+    curve = AL.wave_curve(a, LEFT)
+    assert AL.sound_speed(a.v, a.e) == curve.head_speed    # a on the yield surface
+    assert type(curve.state_at(0.0).v) is float
 
 
 def test_plastic_work_is_the_dissipation_without_gruneisen_heating():
