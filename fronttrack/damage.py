@@ -22,6 +22,8 @@ spacing, its time exactly for that plane.
 
 from __future__ import annotations
 
+import time
+
 from .scene import Scene, SpallCriterion
 
 MAX_FRACTURES = 64
@@ -100,8 +102,11 @@ def run_with_damage(scene: Scene, engine_class, progress=None):
     criterion = scene.spall_criterion
     spacing = scene.accuracy.spall_spacing or 0.0
     fractures: list[tuple[float, float]] = []
+    started = time.perf_counter()
+    events = 0
     while True:
         solution = engine_class(scene, progress, fractures=fractures).run()
+        events += solution.stats["events"]
         found = first_failure(solution, spacing, fractures)
         if found is None:
             break
@@ -110,7 +115,10 @@ def run_with_damage(scene: Scene, engine_class, progress=None):
                 f"spall: more than {MAX_FRACTURES} fractures by t = {found[1] * 1e6:.6g} us; "
                 f"raise spall.threshold or spall.damage, or set accuracy.spall_spacing")
         fractures.append(found)
-    width = min(layer.thickness for layer in scene.layers) / criterion.stations
+    width = max(layer.thickness for layer in scene.layers) / criterion.stations
+    # the returned run's own counts are in "events"/"solve_time"; the totals of all runs too
+    solution.stats["events_all_runs"] = events
+    solution.stats["solve_time_all_runs"] = time.perf_counter() - started
     solution.accuracy_report["spall_criterion"] = {
         "kind": "incubation time" if criterion.exponent == 0.0 else "Tuler-Butcher",
         "threshold": criterion.threshold, "exponent": criterion.exponent,

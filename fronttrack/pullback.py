@@ -287,7 +287,8 @@ def carried_tension(solution, spall) -> float:
 
     ``spall`` is a ``SpallRecord``; the states are those of the regions whose
     closures meet the fracture point from below (the two waves that met there
-    and the region between them), read at a time a hair before the fracture.
+    and the region between them), read at a time a hair before the fracture, and
+    the state at the plane an instant before it.
     """
     x, t = spall.x, spall.t
     scale = max(solution.scene.length, 1e-300)
@@ -299,4 +300,7 @@ def carried_tension(solution, spall) -> float:
         if any(abs(px - x) <= 1e-9 * scale and abs(pt - t) <= 1e-9 * max(t, 1e-300)
                for px, pt in points):
             tension = max(tension, -region.state.sigma)
-    return tension
+    # a fracture inserted inside a region (cumulative-damage criteria) is no vertex:
+    # the state at the plane an instant before it broke
+    before = solution.state_at(x, t * (1.0 - 1e-9))
+    return max(tension, -before.sigma)
