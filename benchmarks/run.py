@@ -35,21 +35,28 @@ def timed(scene: Scene):
     return solution, time.perf_counter() - start
 
 
-def ring_up(quick: bool) -> dict:
+def ring_up(quick: bool, negligible: float | None, entropy_contacts: bool) -> dict:
+    """0.1 mm PMMA between Cu anvils thick enough that nothing returns from their far
+    faces; ``negligible`` (Pa, None: the default) is the smallest wave kept."""
     cu, pmma = get("Cu"), get("PMMA")
     t_end = 2e-6 if quick else 8e-6
     anvil = 1.2 * 4.8e3 * t_end
     scene = Scene(layers=(Layer(cu, anvil, 500.0), Layer(pmma, 0.1e-3), Layer(cu, anvil)),
                   t_end=t_end, probes=(Probe("sample", anvil + 0.05e-3),),
-                  accuracy=Accuracy(rays_per_fan=16), title="ring-up")
+                  accuracy=Accuracy(rays_per_fan=16, negligible_stress=negligible,
+                                    entropy_contacts=entropy_contacts),
+                  title="ring-up")
     solution, seconds = timed(scene)
     history = solution.history(anvil + 0.05e-3)
     steps = int(np.count_nonzero(np.diff(history.sigma)))
     anvil_stress = solution.state_at(anvil * 0.999, t_end).sigma
-    return {"name": "(a) ring-up: 0.1 mm PMMA between Cu anvils, Cu at 500 m/s",
+    kept = "default accuracy" if negligible is None else f"every echo above {negligible:g} Pa"
+    if not entropy_contacts:
+        kept += ", entropy contacts neglected"
+    return {"name": f"(a) ring-up: 0.1 mm PMMA between Cu anvils, Cu at 500 m/s, {kept}",
             "events": solution.stats["events"], "seconds": seconds,
-            "detail": f"{steps} stress steps in the PMMA, final {history.sigma[-1] / 1e9:.4f} "
-                      f"GPa (anvil {anvil_stress / 1e9:.4f} GPa)"}
+            "detail": f"{steps} stress steps in the PMMA, final {history.sigma[-1] / 1e9:.6f} "
+                      f"GPa (anvil {anvil_stress / 1e9:.6f} GPa)"}
 
 
 def symmetric_spall(quick: bool, spacing: float, t_end: float) -> dict:
@@ -127,7 +134,11 @@ def write_report(cases: list[dict], rows: list[dict], path: Path, quick: bool) -
     for c in cases:
         lines.append(f"| {c['name']} | {c['events']} | {c['seconds']:.2f} | "
                      f"{c['events'] / c['seconds']:.0f} | {c['detail']} |")
-    lines += ["", "## Speed against error: Cu 1 mm on Cu 3 mm at 400 m/s, to just after spall",
+    lines += ["", "The ring-up at 1 Pa neglects entropy contacts: each reverberation sends a "
+              "weak shock into the anvils that overtakes the previous ones, and the entropy "
+              "jumps those overtakings leave (a few kPa) echo between each other; kept at 1 Pa "
+              "they multiply past 60 000 events by 2.2 us without changing the PMMA stress.",
+              "", "## Speed against error: Cu 1 mm on Cu 3 mm at 400 m/s, to just after spall",
               "", "Errors against the finest run (last row).  `energy balance` is the relative "
               "residual of the energy balance, which needs no reference: it measures the "
               "rays' speeds directly and falls at second order.", "",
@@ -150,7 +161,8 @@ def main() -> None:
     parser.add_argument("--quick", action="store_true")
     parser.add_argument("--output", type=Path, default=Path(__file__).parent / "README.md")
     args = parser.parse_args()
-    cases = [ring_up(args.quick), symmetric_spall(args.quick, 0.5e-3, 3e-6),
+    cases = [ring_up(args.quick, None, True), ring_up(args.quick, 1.0, False),
+             symmetric_spall(args.quick, 0.5e-3, 3e-6),
              symmetric_spall(args.quick, 0.0, 1.5e-6)]
     for c in cases:
         print(f"{c['name']}: {c['events']} events in {c['seconds']:.2f} s; {c['detail']}")
