@@ -35,7 +35,7 @@ def main() -> None:
 
     figure = Figure(figsize=(13.0, 11.8))
     grid = figure.add_gridspec(2, 2, width_ratios=(1.15, 1.0), height_ratios=(1.2, 1.0),
-                               left=0.06, right=0.985, bottom=0.15, top=0.9, wspace=0.25,
+                               left=0.06, right=0.985, bottom=0.15, top=0.9, wspace=0.3,
                                hspace=0.32)
     ax_xt = figure.add_subplot(grid[0, 0])
     ax_v = figure.add_subplot(grid[0, 1])
@@ -120,13 +120,13 @@ def main() -> None:
 
     # estimates against the truth
     bars = [
-        ("acoustic ½ ρ0 CB Δu", estimate.acoustic_bulk, "#7fa7d9"),
-        ("Stepanov ρ0 C0 Δu/(1 + C0/CB)", estimate.stepanov, "#1f4e9c"),
-        ("acoustic ½ ρ0 C0 Δu", estimate.acoustic_longitudinal, "#5d7fb9"),
+        ("acoustic ½ρ0CBΔu", estimate.acoustic_bulk, "#7fa7d9"),
+        ("Stepanov ρ0C0Δu/(1+C0/CB)", estimate.stepanov, "#1f4e9c"),
+        ("acoustic ½ρ0C0Δu", estimate.acoustic_longitudinal, "#5d7fb9"),
         ("carried at the spall plane", estimate.carried_tension, "#c0392b"),
         ("largest tension anywhere", estimate.max_tension, "#d98880"),
         ("spall strength (true)", estimate.spall_strength, "#8b0000"),
-        ("bonded tension at fracture", estimate.fracture_tension, "#e6b0aa"),
+        ("bonded, at fracture", estimate.fracture_tension, "#e6b0aa"),
     ]
     y = np.arange(len(bars))[::-1]
     for yy, (_, value, color) in zip(y, bars, strict=True):
