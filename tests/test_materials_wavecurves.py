@@ -116,11 +116,12 @@ def test_linear_elastic_free_surface_doubles_velocity(quartz, steel):
 @pytest.mark.parametrize("centre", [2e9, 30e9, 100e9])
 def test_fan_states_lie_on_the_isentrope(mg, centre):
     a = shocked(mg, centre)
-    if mg.wave_curve(a, LEFT).sigma_min() > 0.0:
-        # PMMA above ~20 GPa: the hot release isentrope still carries compression at the
-        # model's largest volume, v0 (1 + 0.3/s); see test_materials_errors.
-        pytest.skip("release to zero stress leaves the EOS range")
-    sol = solve_boundary(mg, a, "right", stress=0.0)
+    # PMMA above ~20 GPa: the hot release isentrope still carries compression at the
+    # model's largest volume, v0 (1 + 0.3/s), so that fan ends halfway down to the floor
+    # instead of at zero stress (release to zero is a named error: test_materials_errors).
+    floor = mg.wave_curve(a, LEFT).sigma_min()
+    target = 0.0 if floor <= 0.0 else 0.5 * (floor + centre)
+    sol = solve_boundary(mg, a, "right", stress=target)
     (fan,) = sol.left_waves
     assert isinstance(fan, Fan) and fan.direction == LEFT
     n = 12
@@ -129,7 +130,7 @@ def test_fan_states_lie_on_the_isentrope(mg, centre):
     assert states[0] == fan.ahead == a and states[-1] == fan.behind == sol.left_star
     sig = np.array([s.sigma for s in states])
     assert np.all(np.diff(sig) < 0.0)  # release: sigma strictly decreasing
-    assert np.allclose(np.diff(sig), (0.0 - centre) / n, rtol=1e-9)  # equal stress steps
+    assert np.allclose(np.diff(sig), (target - centre) / n, rtol=1e-9)  # equal stress steps
     assert np.all(np.diff([s.u for s in states]) > 0.0)  # left-going release speeds up
     for s in states:
         sigma_s, e_s = mg.isentrope(a, s.v)
