@@ -35,6 +35,7 @@ import time
 
 from characteristics.rays import discretise_fan, ray_count
 from materials import LEFT, RIGHT, Fan, NoSolutionError, State, solve_boundary, solve_contact
+from materials.riemann import STRENGTH_TOLERANCE
 
 from .damage import run_with_damage
 from .error_estimate import estimate_error
@@ -132,8 +133,12 @@ class Engine:
         return region
 
     def _note_stress(self, region: Region, left_point, right_point) -> None:
+        """Keep the lowest stress (largest tension) and where and when it first appears:
+        a later region within the rounding of a computed stress (1e-12 relative) of it,
+        as the echoes of a held tension are, is the same tension, not a new maximum."""
         sigma = region.state.sigma
-        if self.min_stress is None or sigma < self.min_stress[0]:
+        if (self.min_stress is None
+                or sigma < self.min_stress[0] - STRENGTH_TOLERANCE * abs(self.min_stress[0])):
             x = 0.5 * (left_point[0] + right_point[0])
             self.min_stress = (sigma, x, region.t_start)
 

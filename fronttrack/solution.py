@@ -149,6 +149,20 @@ class Solution:
             self._region_by_id = {r.id: r for r in self.regions}
         return self._arrays
 
+    def _spatial_order(self, index: np.ndarray, pos: np.ndarray, t: float) -> np.ndarray:
+        """Order (left to right at time ``t``) of the front segments ``index``.
+
+        Fronts at one point meet at an event there.  Those born at it are ordered as an
+        instant later (fastest rightmost); those about to arrive, when ``t`` is within
+        rounding of the event but before it, as an instant earlier (slowest rightmost).
+        Each front counts as the one its age or its remaining life says it is closer to.
+        Last key: the latest-born.
+        """
+        a = self._front_arrays()
+        speed, t0, t1 = a["speed"][index], a["t0"][index], a["t1"][index]
+        arriving = (t1 - t) < (t - t0)
+        return np.lexsort((t0, np.where(arriving, -speed, speed), pos[index]))
+
     def region_at(self, x: float, t: float):
         """The region containing Lagrangian position ``x`` (m) at time ``t`` (s).
 
@@ -164,10 +178,8 @@ class Solution:
             candidates = np.nonzero(live & (a["right"] >= 0))[0]
             best = candidates[np.argmin(pos[candidates])]
         else:
-            # rightmost front at or left of x; among fronts at one point (born at one
-            # event) the fastest, which is rightmost an instant later; then the latest-born
-            order = np.lexsort((a["t0"][candidates], a["speed"][candidates], pos[candidates]))
-            best = candidates[order[-1]]
+            # rightmost front at or left of x, ties at one point ordered as below
+            best = candidates[self._spatial_order(candidates, pos, t)[-1]]
         return self._region_by_id[int(a["right"][best])]
 
     def state_at(self, x: float, t: float) -> State:
@@ -227,7 +239,7 @@ class Solution:
         live = (a["t0"] <= t) & ((a["t1"] > t) | (a["t1"] >= self.scene.t_end))
         pos = np.where(a["speed"] == 0.0, a["x0"], a["x0"] + a["speed"] * (t - a["t0"]))
         index = np.nonzero(live)[0]
-        order = index[np.lexsort((a["t0"][index], a["speed"][index], pos[index]))]
+        order = index[self._spatial_order(index, pos, t)]
         intervals = []
         for i, j in zip(order[:-1], order[1:], strict=True):
             if a["right"][i] >= 0 and pos[j] > pos[i]:

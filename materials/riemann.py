@@ -29,7 +29,7 @@ from dataclasses import dataclass
 
 from .errors import NoSolutionError, StateOutOfRangeError
 from .roots import EPS as _EPS
-from .roots import bracketed_newton
+from .roots import bracket_near, bracketed_newton
 from .state import LEFT, RIGHT, State
 
 
@@ -96,7 +96,8 @@ def solve_contact(left_material, left: State, right_material, right: State,
     stress_scale = abs(left.sigma) + abs(right.sigma) + abs(guess)
     noise = 4.0 * _EPS * (abs(left.u) + abs(right.u)
                           + (stress_scale / z_min if z_min > 0.0 else abs(du)))
-    local = _local_bracket(phi, guess, floor)
+    # phi increases with sigma; below the floor the contact separates instead.
+    local = bracket_near(phi, guess, lower=floor, f_tol=noise)
     if local is not None:
         lo, hi, start, f_lo, f_hi = local
         sigma = bracketed_newton(phi, lo, hi, start, f_lo=f_lo, f_hi=f_hi, f_tol=noise)
@@ -134,45 +135,6 @@ def _bonded(curve_l, curve_r, sigma: float) -> RiemannSolution:
         right_star=curve_r.state_at(sigma),
         bonded_sigma=sigma,
     )
-
-
-_LOCAL_TRIES = 6
-
-
-def _local_bracket(phi, guess: float, floor: float):
-    """A bracket ``(lo, hi, guess, f_lo, f_hi)`` around the root found near ``guess``.
-
-    The acoustic guess is usually close: one Newton step from it, overshot by
-    half, almost always lands on the other side of the root, so the bracket costs
-    two evaluations near the answer instead of a search over the whole curve.
-    Returns ``None`` (the caller then searches globally) if the guess or a trial
-    leaves a material's range, if the root may lie below ``floor`` (separation),
-    or if no sign change turns up within a few doublings.
-    """
-    if guess < floor:
-        return None
-    try:
-        f0, df0 = phi(guess)
-        if f0 == 0.0:
-            return (guess, guess, guess, 0.0, 0.0) if guess >= floor else None
-        step = -f0 / df0 if df0 > 0.0 and math.isfinite(df0) else None
-        if step is None:
-            return None
-        step *= 1.5
-        for _ in range(_LOCAL_TRIES):
-            trial = guess + step
-            if trial < floor:
-                return None
-            f1 = phi(trial)[0]
-            if (f1 > 0.0) != (f0 > 0.0) or f1 == 0.0:
-                lo, hi, f_lo, f_hi = ((guess, trial, f0, f1) if trial > guess
-                                      else (trial, guess, f1, f0))
-                return lo, hi, guess + step / 1.5, f_lo, f_hi
-            guess, f0 = trial, f1
-            step *= 2.0
-    except (NoSolutionError, StateOutOfRangeError):
-        return None
-    return None
 
 
 def _upper_bracket(phi, curve_l, curve_r, left, right, guess):

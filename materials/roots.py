@@ -12,7 +12,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 
-from .errors import NoSolutionError
+from .errors import NoSolutionError, StateOutOfRangeError
 
 _MAX_ITERATIONS = 200
 
@@ -81,3 +81,53 @@ def bracketed_newton(
             step_old = hi - lo
             x = 0.5 * (lo + hi)
     return x
+
+
+_LOCAL_TRIES = 6
+
+
+def bracket_near(
+    func: Callable[[float], tuple[float, float]],
+    guess: float,
+    lower: float = -math.inf,
+    upper: float = math.inf,
+    f_tol: float = 0.0,
+) -> tuple[float, float, float, float, float] | None:
+    """A bracket ``(lo, hi, start, f_lo, f_hi)`` around the root of a monotone ``func``
+    nearest ``guess``, or ``None``.
+
+    One Newton step from a good guess, overshot by half, almost always lands on the
+    other side of the root: the bracket then costs two evaluations near the answer
+    instead of evaluations at the far ends of the admissible interval, and ``start``
+    (the Newton point) is where the bracketed iteration should begin.  The step
+    doubles up to a few times while the sign does not change.  Returns ``None`` (the
+    caller then brackets globally) when a trial leaves ``[lower, upper]``, when a
+    trial leaves an equation of state's range, or when the slope at the guess is
+    zero or not finite.  A guess with ``|f| <= f_tol`` (the caller's rounding noise, as in
+    ``bracketed_newton``) is the root: the degenerate bracket ``(guess, guess, guess, 0,
+    0)`` says so, and stepping through noise would only move it.
+    """
+    if not lower <= guess <= upper:
+        return None
+    try:
+        f0, df0 = func(guess)
+        if abs(f0) <= f_tol:
+            return guess, guess, guess, 0.0, 0.0
+        if df0 == 0.0 or not math.isfinite(df0):
+            return None
+        step = -1.5 * f0 / df0
+        for _ in range(_LOCAL_TRIES):
+            trial = guess + step
+            if not lower <= trial <= upper:
+                return None
+            f1 = func(trial)[0]
+            if (f1 > 0.0) != (f0 > 0.0) or f1 == 0.0:
+                start = guess + step / 1.5
+                if trial > guess:
+                    return guess, trial, start, f0, f1
+                return trial, guess, start, f1, f0
+            guess, f0 = trial, f1
+            step *= 2.0
+    except (NoSolutionError, StateOutOfRangeError):
+        return None
+    return None

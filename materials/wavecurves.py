@@ -34,7 +34,7 @@ import math
 
 from .errors import NoSolutionError, StateOutOfRangeError
 from .roots import EPS as _EPS
-from .roots import bracketed_newton
+from .roots import bracket_near, bracketed_newton
 from .state import State
 from .waves import Fan, Shock
 
@@ -83,6 +83,7 @@ class HydrodynamicWaveCurve(StressRange):
         self._impedance = material.rho0 * material.sound_speed(ahead.v, ahead.e)
         self._sigma_min: float | None = None
         self._last_state: State | None = None
+        self._last_point: tuple[float, float, float] | None = None
         self._integrals = [(ahead.v, 0.0)]
 
     @property
@@ -183,8 +184,14 @@ class HydrodynamicWaveCurve(StressRange):
         # Acoustic first guess: dv = -(dsigma) / (rho0 C)^2.
         guess = (a.v - (sigma - a.sigma) / self._impedance**2 if self._impedance > 0.0
                  else None)
+        noise = 4.0 * _EPS * (abs(sigma) + abs(a.sigma))
+        local = (bracket_near(residual, guess, min(lo, hi), max(lo, hi), noise)
+                 if guess is not None else None)
+        if local is not None:
+            lo, hi, start, f_lo, f_hi = local
+            return bracketed_newton(residual, lo, hi, start, rel_tol=2e-16, f_lo=f_lo,
+                                    f_hi=f_hi, f_tol=noise)
         try:
-            noise = 4.0 * _EPS * (abs(sigma) + abs(a.sigma))
             return bracketed_newton(residual, lo, hi, guess, rel_tol=2e-16, f_tol=noise)
         except (NoSolutionError, StateOutOfRangeError):
             self.check_stress(sigma)  # names the range the stress is outside
@@ -200,15 +207,33 @@ class HydrodynamicWaveCurve(StressRange):
     def _g_at(self, sigma: float, v: float) -> tuple[float, float]:
         a, mat = self.ahead, self.material
         if self._on_hugoniot(sigma):
+            if abs(a.v - v) <= self._WEAK_JUMP * a.v:
+                # u_b - u_a = sqrt(dsigma dv) with dv resolved only to rounding: a bias (a
+                # negative product clipped to zero) that 1000 echoes of rounding-level waves
+                # turned into a 1e-11 drift.  dsigma / (rho0 U), U from the tangent at the
+                # mid volume, equals it to O(dv^2) relative.
+                impedance = self._weak_shock_impedance(v)
+                return (sigma - a.sigma) / impedance, 1.0 / impedance
             jump = (sigma - a.sigma) * (a.v - v)
             g = math.copysign(math.sqrt(max(jump, 0.0)), sigma - a.sigma)
-            if g == 0.0:
-                return 0.0, self._compliance
             ds_dv = mat.hugoniot(a, v)[2]
             return g, ((a.v - v) - (sigma - a.sigma) / ds_dv) / (2.0 * g)
         c = mat.sound_speed(v, self._energy(sigma, v))
         slope = 1.0 / (mat.rho0 * c) if c > 0.0 else math.inf
         return -self._riemann_integral(v), slope
+
+    def _weak_shock_impedance(self, v: float) -> float:
+        """``rho0 U`` of a shock to volume ``v`` so weak that the stored volumes resolve
+        ``v_a - v`` only to ``ulp(v) / |dv| > 1e-11``: the chord
+        ``(rho0 U)^2 = -(sigma - sigma_a) / (v - v_a)`` is then rounding noise (a 1e-7 Pa
+        jump in Al gave U = 500 m/s, not 5350 m/s), while the Hugoniot's tangent at the mid
+        volume equals it to O(dv^2).  A linear elastic solid: exactly ``rho0 C`` for every
+        wave, as the ratio of differences would carry the rounding of the volumes."""
+        mat, a = self.material, self.ahead
+        if getattr(mat, "is_linear", False):
+            return self._impedance
+        slope = mat.hugoniot(a, 0.5 * (a.v + v))[2]
+        return math.sqrt(-slope) if slope < 0.0 else self._impedance
 
     def _riemann_integral(self, v: float) -> float:
         """``J(v)`` along the isentrope of ``ahead``, extended from the nearest known value.
@@ -229,7 +254,12 @@ class HydrodynamicWaveCurve(StressRange):
         """``(g, dg/dsigma)``: the particle-velocity change ``u - u_a = d * g``."""
         if sigma == self.ahead.sigma:
             return 0.0, self._compliance
-        return self._g_at(sigma, self._volume(sigma))
+        v = self._volume(sigma)
+        g = self._g_at(sigma, v)
+        # The solver's last evaluation is usually at the stress it returns, whose state
+        # it asks for next: remember the point so ``state_at`` does not solve it again.
+        self._last_point = (sigma, v, g[0])
+        return g
 
     def state_at(self, sigma: float) -> State:
         """The state behind the wave that reaches stress ``sigma``."""
@@ -243,8 +273,11 @@ class HydrodynamicWaveCurve(StressRange):
 
     def _state_at(self, sigma: float) -> State:
         a = self.ahead
-        v = self._volume(sigma)
-        g, _ = self._g_at(sigma, v)
+        if self._last_point is not None and self._last_point[0] == sigma:
+            _, v, g = self._last_point
+        else:
+            v = self._volume(sigma)
+            g, _ = self._g_at(sigma, v)
         return State(sigma=float(sigma), u=float(a.u + self.direction * g), v=float(v),
                      e=float(self._energy(sigma, v)))
 
@@ -257,20 +290,11 @@ class HydrodynamicWaveCurve(StressRange):
         d = self.direction
         if self._on_hugoniot(sigma):
             mat = self.material
-            if getattr(mat, "is_linear", False):
-                # Every wave of a linear elastic solid moves at exactly C; the ratio of
-                # differences below would carry the rounding of the stored volumes.
-                speed = d * mat.sound_speed(a.v, a.e)
-            elif abs(behind.v - a.v) > self._WEAK_JUMP * a.v:
-                speed = (behind.sigma - a.sigma) / (mat.rho0 * (behind.u - a.u))
+            if (getattr(mat, "is_linear", False)
+                    or abs(behind.v - a.v) <= self._WEAK_JUMP * a.v):
+                speed = d * self._weak_shock_impedance(behind.v) / mat.rho0
             else:
-                # So weak a jump that the stored volumes resolve v_a - v_b only to
-                # ulp(v)/|dv| > 1e-11: the chord U^2 = -v0^2 (sigma_b - sigma_a)/(v_b - v_a)
-                # is rounding noise (a 1e-7 Pa jump in Al gave 500 m/s, not 5350 m/s).
-                # The Hugoniot's tangent at the mid volume equals the chord to O(dv^2).
-                slope = mat.hugoniot(a, 0.5 * (a.v + behind.v))[2]
-                speed = d * (mat.v0 * math.sqrt(-slope) if slope < 0.0
-                             else self._impedance / mat.rho0)
+                speed = (behind.sigma - a.sigma) / (mat.rho0 * (behind.u - a.u))
             return (Shock(ahead=a, behind=behind, speed=speed, direction=d),)
         head = d * self.material.sound_speed(a.v, a.e)
         tail = d * self.material.sound_speed(behind.v, behind.e)

@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
 import pytest
 from engine_helpers import assert_contacts_continuous, assert_no_nan, assert_shock_jumps
 
@@ -61,25 +62,36 @@ def test_near_parallel_shocks_overtake_far_away():
 
 
 def test_thousand_reverberations_ring_up():
-    """A 0.1 mm elastic PMMA-like layer between thick elastic sapphire anvils, struck at V:
-    the layer rings up to the anvil-anvil impact state Z_s V / 2 after 1000+ reflections."""
+    """A 0.1 mm soft elastic layer (a foam-like polymer, Z 149 times below sapphire)
+    between thick elastic sapphire anvils, struck at V = 1 m/s.  With
+    r = (Z_s - Z_p)/(Z_s + Z_p) = 0.987 the k-th wave through the layer's middle (at
+    t = (k - 1/2) d/C_p) brings the stress to sigma_k = (Z_s V / 2) (1 - r^k): 1100 steps,
+    each checked, the last still 3.7e-7 of the final state, so every echo is physical and
+    none has decayed into rounding."""
     sapphire = LinearElastic("sapphire", 3985.0, 11190.0)
-    pmma = LinearElastic("PMMA", 1186.0, 2750.0)
-    v, thin = 100.0, 0.1e-3
-    transit = thin / pmma.C
-    t_end = 1100 * transit
+    foam = LinearElastic("foam", 300.0, 1000.0)
+    v, thin = 1.0, 0.1e-3  # final stress 22 MPa, a 7 % strain of the foam
+    transit = thin / foam.C
+    steps = 1100
+    t_end = steps * transit
     anvil = sapphire.C * t_end * 1.01
-    scene = Scene(layers=(Layer(sapphire, anvil, v), Layer(pmma, thin), Layer(sapphire, anvil)),
+    scene = Scene(layers=(Layer(sapphire, anvil, v), Layer(foam, thin), Layer(sapphire, anvil)),
                   t_end=t_end, accuracy=Accuracy(negligible_stress=0.0))
     sol = run(scene)
-    inside = [e for e in sol.events if anvil < e.x < anvil + thin or e.x in (anvil, anvil + thin)]
-    assert len(inside) >= 1000
-    final = sol.state_at(anvil + 0.5 * thin, t_end)
-    # 1100 successive solves, each exact to a few ulps: rounding random-walks to ~1e-12
-    assert final.sigma == pytest.approx(sapphire.impedance * v / 2.0, rel=1e-11)
-    assert final.u == pytest.approx(v / 2.0, rel=1e-11)
-    c = sol.conservation()
-    assert c["momentum_relative_error"] < 1e-12 and c["energy_relative_error"] < 1e-12
+    z_s, z_p = sapphire.impedance, foam.impedance
+    r = (z_s - z_p) / (z_s + z_p)
+    history = sol.history(anvil + 0.5 * thin)
+    k = np.arange(1, steps + 1)
+    assert len(history.t) == steps + 1  # the initial rest state, then one step per transit
+    # positions near X = 1.24 m (the anvil) carry ulp(X) ~ 2e-16 m: 2e-19 s at C_p
+    position_rounding = 16 * np.finfo(float).eps * anvil / foam.C
+    assert np.allclose(history.t[1:], (k - 0.5) * transit, rtol=1e-12, atol=position_rounding)
+    # each solve is exact to a few ulps; 1100 in a row random-walk to ~1e-13
+    expected = 0.5 * z_s * v * (1.0 - r**k)
+    assert np.allclose(history.sigma[1:], expected, rtol=1e-12, atol=0.0)
+    assert 0.5 * z_s * v - history.sigma[-1] > 3e-7 * 0.5 * z_s * v
+    assert_no_nan(sol)
+    assert_contacts_continuous(sol)
 
 
 def test_extreme_impedance_mismatch_tungsten_on_pmma():

@@ -104,7 +104,7 @@ def test_symmetric_elastic_impact_without_spall():
     sol = run(_symmetric_elastic(1.2e-6))
     estimate = spall_estimates(sol)
     record = estimate.record
-    assert record.u_max == 200.0 and abs(record.u_min) <= 1e-12
+    assert close(record.u_max, 200.0) and abs(record.u_min) <= 1e-12
     assert close(record.t_peak, 2e-3 / C) and close(record.t_min, 4e-3 / C)
     assert close(record.t_rebound, 6e-3 / C)
     assert close(estimate.acoustic_longitudinal, Z * 200.0 / 2)
@@ -119,7 +119,7 @@ def test_record_that_has_not_risen_yet():
     sol = run(_symmetric_elastic(0.9e-6))
     with pytest.raises(NoPullbackError, match="no spall signal"):
         pullback(sol)
-    assert pullback(sol, require_rebound=False).delta_u == 200.0
+    assert close(pullback(sol, require_rebound=False).delta_u, 200.0)
     with pytest.raises(ValueError, match="side"):
         pullback(sol, side="top")
 
