@@ -23,6 +23,10 @@ from .state import State
 class IdealGas(AffineEnergyMaterial):
     """Gamma-law gas: ``gamma`` (> 1), reference density ``rho0`` (kg/m^3), optional ``cv``."""
 
+    relative_stress_precision = True
+    """The isentrope ``p = p_a (v_a / v)^gamma`` is closed-form, good to a few ulps of p
+    itself however far it expands (wave curves then resolve near-vacuum releases)."""
+
     def __init__(self, name: str, gamma: float, rho0: float, cv: float | None = None):
         self.name = name
         gamma = require_number("gamma", gamma, name)

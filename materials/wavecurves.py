@@ -68,8 +68,9 @@ class HydrodynamicWaveCurve(StressRange):
     """Wave curve of a material with a convex Hugoniot and isentropic release."""
 
     _WEAK_JUMP = 1e-5
-    """Relative volume jump below which a shock's speed is taken from the Hugoniot's
-    tangent rather than from the chord of the stored states (see ``waves``)."""
+    """Relative volume jump below which a wave's velocity jump, energy jump and (shock)
+    speed come from its impedance at mid-wave rather than from the stored volumes (see
+    ``_weak_wave``)."""
 
     _MAX_KNOWN_INTEGRALS = 16
     """Riemann integrals remembered per curve (one root search needs a handful)."""
@@ -165,6 +166,16 @@ class HydrodynamicWaveCurve(StressRange):
             def residual(v):
                 s, _, ds = mat.hugoniot(a, v)
                 return s - offset - sigma, ds
+        elif getattr(mat, "relative_stress_precision", False):
+            # A closed-form isentrope good to a few ulps of its own stress down to vacuum:
+            # the rounding is corrected by a factor, not a shift, so that a release to
+            # 1e-15 of the initial pressure is not swamped by an ulp of it.
+            scale = a.sigma / mat.isentrope(a, a.v)[0]
+
+            def residual(v):
+                s, e = mat.isentrope(a, v)
+                return (s * scale - sigma,
+                        -mat.sound_speed_squared(v, e) * mat.rho0**2 * scale)
         else:
             offset = mat.isentrope(a, a.v)[0] - a.sigma
 
@@ -184,7 +195,8 @@ class HydrodynamicWaveCurve(StressRange):
         # Acoustic first guess: dv = -(dsigma) / (rho0 C)^2.
         guess = (a.v - (sigma - a.sigma) / self._impedance**2 if self._impedance > 0.0
                  else None)
-        noise = 4.0 * _EPS * (abs(sigma) + abs(a.sigma))
+        relative = getattr(mat, "relative_stress_precision", False) and sigma < a.sigma
+        noise = 4.0 * _EPS * (abs(sigma) + (0.0 if relative else abs(a.sigma)))
         local = (bracket_near(residual, guess, min(lo, hi), max(lo, hi), noise)
                  if guess is not None else None)
         if local is not None:
@@ -206,14 +218,9 @@ class HydrodynamicWaveCurve(StressRange):
 
     def _g_at(self, sigma: float, v: float) -> tuple[float, float]:
         a, mat = self.ahead, self.material
+        if self._is_weak(v):
+            return self._weak_wave(sigma, v)[:2]
         if self._on_hugoniot(sigma):
-            if abs(a.v - v) <= self._WEAK_JUMP * a.v:
-                # u_b - u_a = sqrt(dsigma dv) with dv resolved only to rounding: a bias (a
-                # negative product clipped to zero) that 1000 echoes of rounding-level waves
-                # turned into a 1e-11 drift.  dsigma / (rho0 U), U from the tangent at the
-                # mid volume, equals it to O(dv^2) relative.
-                impedance = self._weak_shock_impedance(v)
-                return (sigma - a.sigma) / impedance, 1.0 / impedance
             jump = (sigma - a.sigma) * (a.v - v)
             g = math.copysign(math.sqrt(max(jump, 0.0)), sigma - a.sigma)
             ds_dv = mat.hugoniot(a, v)[2]
@@ -222,18 +229,50 @@ class HydrodynamicWaveCurve(StressRange):
         slope = 1.0 / (mat.rho0 * c) if c > 0.0 else math.inf
         return -self._riemann_integral(v), slope
 
-    def _weak_shock_impedance(self, v: float) -> float:
-        """``rho0 U`` of a shock to volume ``v`` so weak that the stored volumes resolve
-        ``v_a - v`` only to ``ulp(v) / |dv| > 1e-11``: the chord
-        ``(rho0 U)^2 = -(sigma - sigma_a) / (v - v_a)`` is then rounding noise (a 1e-7 Pa
-        jump in Al gave U = 500 m/s, not 5350 m/s), while the Hugoniot's tangent at the mid
-        volume equals it to O(dv^2).  A linear elastic solid: exactly ``rho0 C`` for every
-        wave, as the ratio of differences would carry the rounding of the volumes."""
-        mat, a = self.material, self.ahead
-        if getattr(mat, "is_linear", False):
-            return self._impedance
-        slope = mat.hugoniot(a, 0.5 * (a.v + v))[2]
-        return math.sqrt(-slope) if slope < 0.0 else self._impedance
+    def _is_weak(self, v: float) -> bool:
+        """A wave to volume ``v`` so weak (``|v - v_a| <= 1e-5 v_a``) that the stored
+        volumes resolve its jump only to ``ulp(v) / |dv| > 1e-11``."""
+        return abs(self.ahead.v - v) <= self._WEAK_JUMP * self.ahead.v
+
+    def _weak_wave(self, sigma: float, v: float) -> tuple[float, float, float]:
+        """``(g, dg/dsigma, e_b - e_a)`` of a weak wave to stress ``sigma`` (volume ``v``).
+
+        Computed from the rounded volumes, a weak wave's velocity jump (``sqrt(dsigma
+        dv)`` on the Hugoniot, the Riemann integral over ``[v_a, v]`` on the isentrope)
+        and its energy jump carry ``ulp(v) / |dv|`` of noise, with a bias where a
+        negative product is clipped (1000 echoes of rounding-level waves drifted a
+        ring-up by 1e-11; a 1 nm/s fan lost 3e-4 of its velocity).  They are taken from
+        the exact ``dsigma`` instead:
+
+        - shock: ``g = dsigma / (rho0 U)`` with ``(rho0 U)^2`` the Hugoniot's tangent
+          ``-dsigma/dv`` at the mid volume (the chord to O(dv^2)), and the jump condition
+          ``e_b - e_a = (sigma_a + sigma_b) dv / 2`` with ``dv = dsigma / (rho0 U)^2``;
+        - fan: ``g = int dsigma / Z`` and ``e_b - e_a = int sigma dsigma / Z^2``
+          (``Z = rho0 C_L``, ``de = -sigma dv``, ``dv = -dsigma / Z^2``) by Simpson's
+          rule in sigma, Z at the end and middle volumes: O(dsigma^5).
+
+        A linear elastic solid: exactly ``Z = rho0 C`` for every wave.
+        """
+        a, mat = self.ahead, self.material
+        jump = sigma - a.sigma
+        if getattr(mat, "is_linear", False) or self._on_hugoniot(sigma):
+            impedance = self._impedance
+            if not getattr(mat, "is_linear", False):
+                slope = mat.hugoniot(a, 0.5 * (a.v + v))[2]
+                impedance = math.sqrt(-slope) if slope < 0.0 else impedance
+            return (jump / impedance, 1.0 / impedance,
+                    0.5 * (a.sigma + sigma) * jump / impedance**2)
+        z_a, z_m, z_b = (self._impedance, self._isentrope_impedance(0.5 * (a.v + v)),
+                         self._isentrope_impedance(v))
+        g = jump / 6.0 * (1.0 / z_a + 4.0 / z_m + 1.0 / z_b)
+        energy = jump / 6.0 * (a.sigma / z_a**2 + 2.0 * (a.sigma + sigma) / z_m**2
+                               + sigma / z_b**2)
+        return g, 1.0 / z_b, energy
+
+    def _isentrope_impedance(self, v: float) -> float:
+        """``rho0 C_L`` on the isentrope of ``ahead`` at volume ``v``."""
+        mat = self.material
+        return mat.rho0 * mat.sound_speed(v, mat.isentrope(self.ahead, v)[1])
 
     def _riemann_integral(self, v: float) -> float:
         """``J(v)`` along the isentrope of ``ahead``, extended from the nearest known value.
@@ -278,8 +317,12 @@ class HydrodynamicWaveCurve(StressRange):
         else:
             v = self._volume(sigma)
             g, _ = self._g_at(sigma, v)
+        if self._is_weak(v):
+            e = a.e + self._weak_wave(sigma, v)[2]
+        else:
+            e = self._energy(sigma, v)
         return State(sigma=float(sigma), u=float(a.u + self.direction * g), v=float(v),
-                     e=float(self._energy(sigma, v)))
+                     e=float(e))
 
     def waves(self, sigma: float) -> tuple:
         """Elementary waves realising the jump to ``sigma``, leading wave first."""
@@ -290,9 +333,10 @@ class HydrodynamicWaveCurve(StressRange):
         d = self.direction
         if self._on_hugoniot(sigma):
             mat = self.material
-            if (getattr(mat, "is_linear", False)
-                    or abs(behind.v - a.v) <= self._WEAK_JUMP * a.v):
-                speed = d * self._weak_shock_impedance(behind.v) / mat.rho0
+            if getattr(mat, "is_linear", False):
+                speed = d * mat.sound_speed(a.v, a.e)  # exactly C, every wave
+            elif self._is_weak(behind.v):
+                speed = d / (mat.rho0 * self._weak_wave(sigma, behind.v)[1])
             else:
                 speed = (behind.sigma - a.sigma) / (mat.rho0 * (behind.u - a.u))
             return (Shock(ahead=a, behind=behind, speed=speed, direction=d),)

@@ -29,7 +29,9 @@ def assert_shock_jumps(solution, rel=1e-12):
     Lagrangian jump conditions (compression-positive stress):
     ``U (v_b - v_a) = -v0 (u_b - u_a)`` and ``rho0 U (u_b - u_a) = sigma_b - sigma_a``.
     A wave weaker than the negligible stress may have been dropped beside a shock, so
-    the states around it can differ from its own by up to that much.
+    the states around it can differ from its own by up to that much.  The mass jump is
+    also allowed the rounding of the stored volumes, which dominates in very weak scenes
+    (a 1 nm/s impact compresses Cu by 1e-13).
     """
     regions = region_map(solution)
     report = solution.accuracy_report
@@ -45,7 +47,10 @@ def assert_shock_jumps(solution, rel=1e-12):
         momentum = m.rho0 * f.speed * (b.u - a.u) - (b.sigma - a.sigma)
         assert abs(momentum) <= rel * scale, (f.id, momentum)
         mass = f.speed * (b.v - a.v) + m.v0 * (b.u - a.u)
-        assert abs(mass) <= rel * scale / (m.rho0 * abs(f.speed)), (f.id, mass)
+        # volumes are stored whole, so a jump of v is resolved only to a few ulp(v)
+        volume_rounding = 4.0 * np.finfo(float).eps * max(a.v, b.v) * abs(f.speed)
+        assert abs(mass) <= rel * scale / (m.rho0 * abs(f.speed)) + volume_rounding, (
+            f.id, mass)
         checked += 1
     return checked
 

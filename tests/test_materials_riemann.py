@@ -89,10 +89,18 @@ def check_fan(fan: Fan, m, direction: int):
     # volume, (rho0 C_L)^2 ulp(v) ~ 1e-5 Pa (matters only for a fan of a few Pa).
     floor = (m.rho0 * m.sound_speed(b.v, b.e)) ** 2 * 4 * math.ulp(b.v)
     assert abs(sigma_s - b.sigma) <= 1e-12 * max(abs(a.sigma), abs(b.sigma)) + floor
-    assert abs(e_s - b.e) <= 1e-12 * max(abs(a.e), abs(b.e), 1.0)
+    # Energy: 1e-12 relative, plus the reference's own rounding: ``isentrope`` subtracts
+    # two values of the tabulated F(v) = int A E dv (~1e5 J/kg at 10 % strain), ~2e-11 J/kg
+    # of noise, which the weak-wave energy of the curve (a 1 Pa fan) no longer shares.
+    assert abs(e_s - b.e) <= 1e-12 * max(abs(a.e), abs(b.e), 1.0) + 1e-10
     # Riemann invariant of the crossing family: u - u_a = -d J (J = int rho0 C_L dv)
     j = m.riemann_integral(a, b.v)
-    assert (b.u - a.u) == pytest.approx(-direction * j, rel=1e-12, abs=1e-12 * abs(a.u))
+    # J is integrated over [v_a, v_b] of the stored volumes, so it is good only to
+    # rho0 C_L ulp(v), which a weak fan's velocity jump (taken from the exact stress jump)
+    # is not limited by
+    volume_rounding = 4 * m.rho0 * m.sound_speed(b.v, b.e) * math.ulp(b.v)
+    assert (b.u - a.u) == pytest.approx(-direction * j, rel=1e-12,
+                                        abs=1e-12 * abs(a.u) + volume_rounding)
     assert fan.head_speed == direction * m.sound_speed(a.v, a.e)
     assert fan.tail_speed == direction * m.sound_speed(b.v, b.e)
 
@@ -267,7 +275,7 @@ def exact_gas_star(left, right, g=1.4):
             return rho * (q + k) / (k * q + 1)
         return rho * (p / pk) ** (1 / g)
 
-    p = brentq(lambda x: f(x, rl, pl) + f(x, rr, pr) + ur - ul, 1e-14, 1e6,
+    p = brentq(lambda x: f(x, rl, pl) + f(x, rr, pr) + ur - ul, 0.0, 1e6,
                xtol=1e-300, rtol=1e-15, maxiter=500)
     u = 0.5 * (ul + ur) + 0.5 * (f(p, rr, pr) - f(p, rl, pl))
     return p, u, rho_star(p, rl, pl), rho_star(p, rr, pr)
