@@ -233,3 +233,44 @@ def test_square_stress_pulse_from_two_points_at_one_time():
     triple = Boundary("stress", ((0.0, 1e9), (0.2e-6, 1e9), (0.2e-6, 0.0), (0.2e-6, 1.0)))
     with pytest.raises(SceneError, match=r"left\.history"):
         Scene(layers=(Layer(bar, 5e-3),), t_end=1e-6, left=triple).validate()
+
+
+@pytest.mark.parametrize("velocity, energy_tolerance", [(1e-9, 1e-12), (1e-3, 1e-8)])
+def test_very_weak_impact_with_release_fans(velocity, energy_tolerance):
+    """Cu on Cu at 1 nm/s (strain 1e-13, below what stored volumes resolve) and 1 mm/s,
+    isentropic release: the acoustic limit, rear surface at V to 1e-12; the balance holds
+    (at 1 nm/s exactly; at 1 mm/s to the fans' discretisation)."""
+    cu = copper()
+    d = 1e-3
+    scene = Scene(layers=(Layer(cu, d, velocity), Layer(cu, 3 * d, bond="unbonded")),
+                  t_end=1.4e-6, probes=(Probe("rear", "right"),),
+                  accuracy=Accuracy(rays_per_fan=16))
+    sol = run(scene)
+    rear = sol.history("rear")
+    assert rear.u[1] == pytest.approx(velocity, rel=1e-12)
+    c = sol.conservation()
+    assert c["momentum_relative_error"] < 1e-12
+    assert c["energy_relative_error"] < energy_tolerance
+    assert_no_nan(sol)
+    assert_contacts_continuous(sol)
+
+
+@pytest.mark.parametrize("velocity", [4000.0, 6000.0])
+def test_very_strong_impact_spalls_inside_the_eos(velocity):
+    """Cu on Cu at 4 and 6 km/s (180 and 330 GPa): the release from the Hugoniot is far
+    from the principal isentrope, the rear surface moves 2-5 % faster than V, and the
+    target spalls (1.5 GPa) before its tension leaves the equation of state."""
+    cu = copper(strength=1.5e9)
+    d = 1e-3
+    us = cu.c0 + cu.s * velocity / 2
+    scene = Scene(layers=(Layer(cu, d, velocity), Layer(cu, 3 * d, bond="unbonded")),
+                  t_end=1.5 * 3 * d / us, probes=(Probe("rear", "right"),),
+                  accuracy=Accuracy(rays_per_fan=16))
+    sol = run(scene)
+    shocked = sol.state_at(d + 1e-6, 1e-9)
+    assert shocked.u == pytest.approx(velocity / 2, rel=1e-12)
+    assert shocked.sigma == pytest.approx(cu.rho0 * us * velocity / 2, rel=1e-12)
+    assert 1.02 < sol.history("rear").u[1] / velocity < 1.06
+    assert sol.spalls and sol.max_tension()["sigma"] >= -1.5e9 * (1 + 1e-12)
+    assert_no_nan(sol)
+    assert_contacts_continuous(sol)
