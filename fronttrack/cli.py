@@ -137,14 +137,19 @@ def _materials(args) -> int:
 
 # --- helpers ------------------------------------------------------------------------
 def _solve(scene, quiet: bool):
+    # On a terminal the progress line rewrites itself; in a log each report is a line.
+    terminal = sys.stderr.isatty()
+    start, end = ("\r\x1b[K", "") if terminal else ("", "\n")
+
     def progress(events: int, t: float) -> None:
-        print(f"\r  {events} events, t = {t * 1e6:.4g} of {scene.t_end * 1e6:.4g} us",
-              end="", file=sys.stderr, flush=True)
+        print(f"{start}  {events} events, t = {t * 1e6:.4g} of {scene.t_end * 1e6:.4g} us",
+              end=end, file=sys.stderr, flush=True)
 
     solution = run(scene, progress=None if quiet else progress)
     if not quiet:
         stats, report = solution.stats, solution.accuracy_report
-        print(f"\r{scene.title or 'scene'}: {stats['events']} events, {stats['fronts']} fronts, "
+        print(f"{start}{scene.title or 'scene'}: {stats['events']} events, "
+              f"{stats['fronts']} fronts, "
               f"{len(solution.spalls)} spall planes, solved in {stats['solve_time']:.3g} s "
               f"(release: {report['release']}, {report['dropped_waves']} waves below "
               f"{report['negligible_stress']:.3g} Pa dropped)", file=sys.stderr)
