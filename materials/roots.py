@@ -34,10 +34,10 @@ def bracketed_newton(
     """Root of ``func`` in ``[lo, hi]``; ``func(x)`` returns ``(f, df/dx)``.
 
     ``f(lo)`` and ``f(hi)`` must differ in sign (a zero at an end is accepted).
-    Iteration stops when the bracket is narrower than
-    ``rel_tol * |x| + abs_tol``, or when ``|f| <= f_tol``: callers whose ``f`` is
-    computed with a known rounding noise pass that noise as ``f_tol``, so that
-    the iteration does not bisect through noise once Newton has converged.
+    Iteration stops when the bracket is narrower than ``rel_tol * |x| + abs_tol``
+    (or one ulp of x), or when ``|f| <= f_tol``: callers whose ``f`` is computed
+    with a known rounding noise pass that noise as ``f_tol``, so that the iteration
+    does not bisect through noise once Newton has converged.
     """
     if lo > hi:
         lo, hi = hi, lo
@@ -64,7 +64,9 @@ def bracketed_newton(
             hi = x
         else:
             lo = x
-        tol = rel_tol * abs(x) + abs_tol
+        # never below one ulp: a bracket of two neighbouring floats cannot shrink, and
+        # where the slope is steep |f| may stay above f_tol on both of them
+        tol = max(rel_tol * abs(x) + abs_tol, math.ulp(x))
         if hi - lo <= tol:
             return x
         newton_ok = df != 0.0 and math.isfinite(df)
