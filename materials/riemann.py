@@ -31,6 +31,7 @@ from .errors import NoSolutionError, StateOutOfRangeError
 from .roots import EPS as _EPS
 from .roots import bracket_near, bracketed_newton
 from .state import LEFT, RIGHT, State
+from .wavecurves import WEAK_VOLUME_JUMP
 
 
 @dataclass(frozen=True, slots=True)
@@ -96,6 +97,7 @@ def solve_contact(left_material, left: State, right_material, right: State,
     stress_scale = abs(left.sigma) + abs(right.sigma) + abs(guess)
     noise = 4.0 * _EPS * (abs(left.u) + abs(right.u)
                           + (stress_scale / z_min if z_min > 0.0 else abs(du)))
+    noise += _volume_noise(curve_l, left, guess) + _volume_noise(curve_r, right, guess)
     # phi increases with sigma; below the floor the contact separates instead.
     local = bracket_near(phi, guess, lower=floor, f_tol=noise)
     if local is not None:
@@ -124,6 +126,18 @@ def solve_contact(left_material, left: State, right_material, right: State,
     sigma = bracketed_newton(phi, lo, hi, guess, f_lo=phi_lo, f_hi=phi_hi,
                              f_tol=noise * max(1.0, max(abs(lo), abs(hi)) / max(abs(guess), 1.0)))
     return _bonded(curve_l, curve_r, sigma)
+
+
+def _volume_noise(curve, state: State, sigma: float) -> float:
+    """Rounding (m/s) of a curve's velocity change near ``sigma`` from its volume root:
+    the volume is a float, and one ulp of it moves ``g`` by ``rho0 C_L ulp(v)``; none for
+    a weak jump (acoustic estimate), whose ``g`` comes from the stress jump."""
+    z = curve.impedance
+    if not (math.isfinite(state.v) and z > 0.0):
+        return 0.0
+    if abs(sigma - state.sigma) <= WEAK_VOLUME_JUMP * state.v * z * z:
+        return 0.0
+    return 4.0 * z * math.ulp(state.v)
 
 
 def _bonded(curve_l, curve_r, sigma: float) -> RiemannSolution:
@@ -233,16 +247,21 @@ def solve_boundary(material, state: State, boundary_at: str, *, stress: float | 
             g, dg = curve.velocity_change(s)
             return g - target, dg
 
-        r_lo, r_hi = residual(lo)[0], residual(hi)[0]
-        if r_hi < 0.0 or r_lo > 0.0:
-            raise NoSolutionError(
-                f"{material.name}: a boundary velocity of {velocity:.6g} m/s needs a stress "
-                f"outside the range of its equation of state ({lo / 1e9:.6g} to "
-                f"{hi / 1e9:.6g} GPa)"
-            )
         z = material.rho0 * material.sound_speed(state.v, state.e)
         guess = state.sigma + z * target
-        noise = 4.0 * _EPS * (abs(state.u) + abs(float(velocity)) + abs(guess) / z)
+        noise = (4.0 * _EPS * (abs(state.u) + abs(float(velocity)) + abs(guess) / z)
+                 + _volume_noise(curve, state, guess))
+        local = bracket_near(residual, guess, lo, hi, f_tol=noise)
+        if local is not None:
+            lo, hi, guess, r_lo, r_hi = local
+        else:
+            r_lo, r_hi = residual(lo)[0], residual(hi)[0]
+            if r_hi < 0.0 or r_lo > 0.0:
+                raise NoSolutionError(
+                    f"{material.name}: a boundary velocity of {velocity:.6g} m/s needs a "
+                    f"stress outside the range of its equation of state ({lo / 1e9:.6g} to "
+                    f"{hi / 1e9:.6g} GPa)"
+                )
         sigma = bracketed_newton(residual, lo, hi, guess, f_lo=r_lo, f_hi=r_hi, f_tol=noise)
     star = curve.state_at(sigma)
     if velocity is not None:

@@ -38,6 +38,11 @@ from .roots import bracket_near, bracketed_newton
 from .state import State
 from .waves import Fan, Shock
 
+WEAK_VOLUME_JUMP = 1e-5
+"""Relative volume jump below which a wave curve takes a wave's velocity and energy
+jumps from its exact stress jump (``HydrodynamicWaveCurve._weak_wave``), free of the
+rounding of the stored volumes."""
+
 RELEASE_PATHS = ("isentrope", "hugoniot")
 
 
@@ -67,7 +72,7 @@ class StressRange:
 class HydrodynamicWaveCurve(StressRange):
     """Wave curve of a material with a convex Hugoniot and isentropic release."""
 
-    _WEAK_JUMP = 1e-5
+    _WEAK_JUMP = WEAK_VOLUME_JUMP
     """Relative volume jump below which a wave's velocity jump, energy jump and (shock)
     speed come from its impedance at mid-wave rather than from the stored volumes (see
     ``_weak_wave``)."""
