@@ -254,7 +254,7 @@ class HydrodynamicWaveCurve(StressRange):
           ``e_b - e_a = (sigma_a + sigma_b) dv / 2`` with ``dv = dsigma / (rho0 U)^2``;
         - fan: ``g = int dsigma / Z`` and ``e_b - e_a = int sigma dsigma / Z^2``
           (``Z = rho0 C_L``, ``de = -sigma dv``, ``dv = -dsigma / Z^2``) by Simpson's
-          rule in sigma, Z at the end and middle volumes: O(dsigma^5).
+          rule in sigma, Z at the end volumes and at the volume of the mean stress.
 
         A linear elastic solid: exactly ``Z = rho0 C`` for every wave.
         """
@@ -267,8 +267,11 @@ class HydrodynamicWaveCurve(StressRange):
                 impedance = math.sqrt(-slope) if slope < 0.0 else impedance
             return (jump / impedance, 1.0 / impedance,
                     0.5 * (a.sigma + sigma) * jump / impedance**2)
-        z_a, z_m, z_b = (self._impedance, self._isentrope_impedance(0.5 * (a.v + v)),
-                         self._isentrope_impedance(v))
+        z_a, z_b = self._impedance, self._isentrope_impedance(v)
+        # the volume at sigma_mid: the mean volume less the curvature term of
+        # v(sigma), v'' = 2 Z' / Z^3 with Z' = (Z_b - Z_a) / dsigma (else O(dv^2) in g)
+        middle = 0.5 * (a.v + v) - jump * (z_b - z_a) / (4.0 * z_a**3)
+        z_m = self._isentrope_impedance(middle)
         g = jump / 6.0 * (1.0 / z_a + 4.0 / z_m + 1.0 / z_b)
         energy = jump / 6.0 * (a.sigma / z_a**2 + 2.0 * (a.sigma + sigma) / z_m**2
                                + sigma / z_b**2)
