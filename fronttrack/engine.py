@@ -110,6 +110,7 @@ class Engine:
         self.dropped_count = 0
         self.neglected_entropy = 0.0
         self.neglected_contacts = 0
+        self.unresolved_contacts = 0
         self.suppressed_spalls = 0
         self.suppressed_tension = 0.0
         self.min_stress: tuple[float, float, float] | None = None
@@ -568,7 +569,8 @@ class Engine:
         right_specs = right_specs or []
         middle = site if site is not None else new_site
         if middle is None and left_star is not None and right_star is not None:
-            middle = self._entropy_contact(left_star, right_star, material_left, t, x)
+            middle = self._entropy_contact(left_star, right_star, material_left, t, x,
+                                           group)
             if middle is None:
                 left_star = right_star = _merged(left_star, right_star)
         # Fronts left to right, each with the state on its right.
@@ -592,7 +594,7 @@ class Engine:
             site=middle.id if middle is not None else None))
 
     def _entropy_contact(self, left: State, right: State, material, t: float,
-                         x: float) -> Front | None:
+                         x: float, group) -> Front | None:
         """A contact for the entropy jump between two star states, if it matters.
 
         A contact that would reflect less than the negligible stress from the
@@ -600,17 +602,36 @@ class Engine:
         and for an elastic–plastic solid the offset of the yield stresses) is not
         tracked (every later crossing would be an event for nothing): the two
         states are merged and the largest relative volume jump so neglected is
-        reported.  Jumps below ``ENTROPY_JUMP_TOLERANCE`` are rounding.
+        reported.  Jumps below ``ENTROPY_JUMP_TOLERANCE`` are rounding.  So is, when
+        the scene sets ``accuracy.contact_resolution``, a contact born closer than that
+        to the neighbouring contact (elastic–plastic spall zones otherwise build combs of
+        contacts nanometres apart that every later wave must cross); those are counted.
         """
         jump = abs(left.v - right.v) / max(left.v, right.v)
         keep = self.acc.entropy_contacts and jump > ENTROPY_JUMP_TOLERANCE
         if keep and self.negligible > 0.0 and math.isfinite(left.v + right.v):
             keep = material.contact_reflection(left, right, self.stress_scale) > self.negligible
+        if keep and self._contact_within(group, x, self.acc.contact_resolution):
+            keep = False
+            self.unresolved_contacts += 1
         if keep:
             return self._new_front("contact", x, t, bond="bonded")
         self.neglected_entropy = max(self.neglected_entropy, jump)
         self.neglected_contacts += jump > ENTROPY_JUMP_TOLERANCE
         return None
+
+    @staticmethod
+    def _contact_within(group, x: float, distance: float) -> bool:
+        """True if the nearest site on either side of ``group`` is an entropy contact
+        closer than ``distance`` (m) to ``x``."""
+        if distance <= 0.0:
+            return False
+        for front, step in ((group[0].prev, "prev"), (group[-1].next, "next")):
+            while front is not None and not front.is_site:
+                front = getattr(front, step)
+            if front is not None and front.kind == "contact" and abs(front.x0 - x) < distance:
+                return True
+        return False
 
     def _splice(self, group, items, between, region_left, region_right, t, x, middle):
         """Kill ``group`` (except a continuing site), link ``items`` and make their regions."""
@@ -703,6 +724,7 @@ def _combine(left_solution, right_solution):
                            left_star=left_solution.left_star,
                            right_star=right_solution.right_star, separated=True,
                            bonded_sigma=0.0)
+
 
 
 def _merged(a: State, b: State) -> State:

@@ -100,7 +100,10 @@ class Accuracy:
     velocity).  ``max_events``: stop with an error beyond this many events.
     ``spall_spacing`` (m): no new spall plane closer than this to an earlier one
     (the tension there is carried and reported, unless it would leave the
-    equations of state); ``None`` or 0 allows any spacing.  ``estimate_error``: run the scene
+    equations of state); ``None`` or 0 allows any spacing.  ``contact_resolution`` (m):
+    an entropy contact born closer than this to the neighbouring contact is merged
+    like a negligible one (counted in the report); 0, the default, keeps every one.
+    ``estimate_error``: run the scene
     again at half the ray step and report the estimated error of the records
     (``fronttrack.error_estimate``) when it has fans.
     """
@@ -112,6 +115,7 @@ class Accuracy:
     entropy_contacts: bool = True
     max_events: int = 200_000
     spall_spacing: float | None = None
+    contact_resolution: float = 0.0
     estimate_error: bool = False
 
 
@@ -244,6 +248,9 @@ class Scene:
         if acc.spall_spacing is not None and not acc.spall_spacing >= 0.0:
             raise SceneError(f"accuracy.spall_spacing: must be >= 0 m, "
                              f"got {acc.spall_spacing!r}")
+        if not acc.contact_resolution >= 0.0:
+            raise SceneError(f"accuracy.contact_resolution: must be >= 0 m, "
+                             f"got {acc.contact_resolution!r}")
         if not (isinstance(acc.max_events, int) and acc.max_events >= 1):
             raise SceneError(f"accuracy.max_events: must be a positive integer, "
                              f"got {acc.max_events!r}")

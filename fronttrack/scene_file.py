@@ -8,7 +8,7 @@ file reads as a lab notebook and converts to the SI ``Scene`` of
     t_end = "3 us"
     [accuracy]              # rays_per_fan, stress_tolerance, negligible_stress,
                             # release, entropy_contacts, max_events, spall_spacing,
-                            # estimate_error
+                            # contact_resolution, estimate_error
     [materials.MyPMMA]      # inline material: model and its fields with units
     model = "mie-gruneisen"
     rho0 = "1186 kg/m3"
@@ -59,7 +59,8 @@ _LAYER_KEYS = ("material", "thickness", "velocity", "stress", "name", "bond")
 _BOUNDARY_KEYS = ("kind", "value", "history")
 _PROBE_KEYS = ("name", "at")
 _ACCURACY_KEYS = ("rays_per_fan", "stress_tolerance", "negligible_stress", "release",
-                  "entropy_contacts", "max_events", "spall_spacing", "estimate_error")
+                  "entropy_contacts", "max_events", "spall_spacing", "contact_resolution",
+                  "estimate_error")
 _SPALL_KEYS = ("criterion", "threshold", "exponent", "damage", "incubation_time", "stations")
 _SPALL_CRITERIA = ("tuler-butcher", "incubation")
 _BOUNDARY_DIMENSION = {"velocity": "velocity", "stress": "stress"}
@@ -261,6 +262,9 @@ def _accuracy(table: dict[str, Any]) -> Accuracy:
         max_events=_typed(table, "max_events", int, defaults.max_events),
         spall_spacing=_optional_quantity(table, "spall_spacing", "length",
                                          "accuracy.spall_spacing", None),
+        contact_resolution=_optional_quantity(table, "contact_resolution", "length",
+                                              "accuracy.contact_resolution",
+                                              defaults.contact_resolution),
         estimate_error=_typed(table, "estimate_error", bool, defaults.estimate_error),
     )
 

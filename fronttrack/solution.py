@@ -118,6 +118,8 @@ class Solution:
             "dropped_stress_total": engine.dropped_stress,
             "neglected_entropy_volume_jump": engine.neglected_entropy,
             "neglected_entropy_contacts": engine.neglected_contacts,
+            "contact_resolution": engine.acc.contact_resolution,
+            "contacts_below_resolution": engine.unresolved_contacts,
             "spall_spacing": [engine.spall_spacing(i) for i in range(len(engine.scene.layers))],
             "suppressed_spalls": engine.suppressed_spalls,
             "largest_suppressed_tension": engine.suppressed_tension,

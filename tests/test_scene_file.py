@@ -318,3 +318,13 @@ def test_bad_values_are_named(doc, fragments):
 def test_document_must_be_a_table():
     with pytest.raises(SceneError, match="document: expected a table"):
         scene_from_dict([], "x")
+
+
+def test_contact_resolution_is_a_length():
+    scene = scene_from_dict(doc_with(accuracy={"contact_resolution": "2 nm"}), "res")
+    assert scene.accuracy.contact_resolution == pytest.approx(2e-9, rel=1e-15)
+    assert scene_from_dict(doc_with(), "base").accuracy.contact_resolution == 0.0
+    assert "accuracy.contact_resolution" in error_of(doc_with(
+        accuracy={"contact_resolution": "-1 nm"}))
+    assert "accuracy.contact_resolution" in error_of(doc_with(
+        accuracy={"contact_resolution": "1 GPa"}))

@@ -16,6 +16,7 @@ CONVERSIONS = [
     ("250 um", "length", 250e-6),
     ("250 µm", "length", 250e-6),
     ("250 μm", "length", 250e-6),  # Greek mu, read as the micro sign
+    ("20 nm", "length", 20e-9),
     ("1.5 cm", "length", 1.5e-2),
     ("1 in", "length", 0.0254),
     ("2 s", "time", 2.0),
@@ -89,7 +90,7 @@ def test_missing_units_message():
     with pytest.raises(SceneError) as info:
         parse_quantity("5", "length", "layer[0].thickness")
     assert str(info.value) == ('layer[0].thickness: missing units in "5" '
-                               '(use one of m, mm, um, µm, cm, in)')
+                               '(use one of m, mm, um, µm, nm, cm, in)')
 
 
 def test_bare_toml_number_is_missing_units():
