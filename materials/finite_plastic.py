@@ -110,7 +110,7 @@ from .quadrature import panel_edges, points_for, unit_rule
 from .roots import EPS as _EPS
 from .roots import bracketed_newton
 from .state import RIGHT, State
-from .wavecurves import check_curve_arguments
+from .wavecurves import StressRange, check_curve_arguments
 from .waves import Fan, Shock
 
 _SNAP = 1e-12
@@ -439,7 +439,7 @@ def _root(c2: float, name: str, v: float) -> float:
     return math.sqrt(c2)
 
 
-class FinitePlasticWaveCurve:
+class FinitePlasticWaveCurve(StressRange):
     """Wave curve of a ``FinitePlastic`` solid (same interface as ``HydrodynamicWaveCurve``).
 
     ``u = u_a + d g(sigma)`` with ``g`` continuous and increasing:
@@ -727,14 +727,6 @@ class FinitePlasticWaveCurve:
 
     def sigma_max(self) -> float:
         return self.sigma_limits()[1]
-
-    def check_stress(self, sigma: float) -> None:
-        low, high = self.sigma_limits()
-        if not low <= sigma <= high:
-            raise StateOutOfRangeError(
-                f"{self.material.name}: stress {sigma / 1e9:.6g} GPa is outside the range "
-                f"reachable from {self.ahead.sigma / 1e9:.6g} GPa inside its equation of state "
-                f"({low / 1e9:.6g} to {high / 1e9:.6g} GPa)")
 
     @property
     def impedance(self) -> float:
