@@ -90,6 +90,7 @@ class HydrodynamicWaveCurve(StressRange):
         self._sigma_min: float | None = None
         self._last_state: State | None = None
         self._last_point: tuple[float, float, float] | None = None
+        self._last_weak: tuple | None = None
         self._integrals = [(ahead.v, 0.0)]
 
     @property
@@ -165,6 +166,8 @@ class HydrodynamicWaveCurve(StressRange):
             return a.v
         # The path's own stress at v_a differs from the recorded sigma_a by rounding;
         # subtracting it makes the residual at v_a exactly sigma_a - sigma.
+        # Rounding of the residual: a few ulps of the stresses it subtracts.
+        noise_floor = abs(a.sigma)
         if self._on_hugoniot(sigma):
             offset = mat.hugoniot(a, a.v)[0] - a.sigma
 
@@ -176,6 +179,7 @@ class HydrodynamicWaveCurve(StressRange):
             # the rounding is corrected by a factor, not a shift, so that a release to
             # 1e-15 of the initial pressure is not swamped by an ulp of it.
             scale = a.sigma / mat.isentrope(a, a.v)[0]
+            noise_floor = 0.0
 
             def residual(v):
                 s, e = mat.isentrope(a, v)
@@ -200,8 +204,7 @@ class HydrodynamicWaveCurve(StressRange):
         # Acoustic first guess: dv = -(dsigma) / (rho0 C)^2.
         guess = (a.v - (sigma - a.sigma) / self._impedance**2 if self._impedance > 0.0
                  else None)
-        relative = getattr(mat, "relative_stress_precision", False) and sigma < a.sigma
-        noise = 4.0 * _EPS * (abs(sigma) + (0.0 if relative else abs(a.sigma)))
+        noise = 4.0 * _EPS * (abs(sigma) + noise_floor)
         local = (bracket_near(residual, guess, min(lo, hi), max(lo, hi), noise)
                  if guess is not None else None)
         if local is not None:
@@ -258,6 +261,13 @@ class HydrodynamicWaveCurve(StressRange):
 
         A linear elastic solid: exactly ``Z = rho0 C`` for every wave.
         """
+        if self._last_weak is not None and self._last_weak[:2] == (sigma, v):
+            return self._last_weak[2]
+        self._last_weak = (sigma, v, self._weak_wave_jumps(sigma, v))
+        return self._last_weak[2]
+
+    def _weak_wave_jumps(self, sigma: float, v: float) -> tuple[float, float, float]:
+        """``_weak_wave`` computed."""
         a, mat = self.ahead, self.material
         jump = sigma - a.sigma
         if getattr(mat, "is_linear", False) or self._on_hugoniot(sigma):
