@@ -121,13 +121,7 @@ def xt_su_figure(solution, title: str, size=(13.0, 6.6), bottom: float = 0.17,
                                bottom=bottom, top=top, wspace=0.28)
     ax_xt = figure.add_subplot(grid[0, 0])
     ax_su = figure.add_subplot(grid[0, 1])
-    plot_xt(solution, ax=ax_xt)
-    plot_sigma_u(solution, ax=ax_su, numbers=placed_labels(ax_xt))
-    ax_xt.set_title("X–t diagram (Lagrangian), regions shaded by stress", fontsize=10,
-                    pad=_title_pad(ax_xt))
-    ax_su.set_title("σ–u diagram: the same numbered states", fontsize=10,
-                    pad=_title_pad(ax_xt))
-    figure.suptitle(title, fontsize=12, y=0.985)
+    _draw_xt_and_sigma_u(solution, figure, ax_xt, ax_su, title, su_title_pad=True)
     return figure, ax_xt, ax_su
 
 
@@ -144,13 +138,20 @@ def xt_su_record_figure(solution, title: str, size=(13.0, 8.6), bottom: float = 
     ax_xt = figure.add_subplot(grid[:, 0])
     ax_su = figure.add_subplot(grid[0, 1])
     ax_record = figure.add_subplot(grid[1, 1])
+    _draw_xt_and_sigma_u(solution, figure, ax_xt, ax_su, title, su_title_pad=False)
+    return figure, ax_xt, ax_su, ax_record
+
+
+def _draw_xt_and_sigma_u(solution, figure, ax_xt, ax_su, title: str, su_title_pad: bool):
+    """The X–t diagram, then the σ–u diagram numbered like it, with titles."""
     plot_xt(solution, ax=ax_xt)
     plot_sigma_u(solution, ax=ax_su, numbers=placed_labels(ax_xt))
+    pad = _title_pad(ax_xt)
     ax_xt.set_title("X–t diagram (Lagrangian), regions shaded by stress", fontsize=10,
-                    pad=_title_pad(ax_xt))
-    ax_su.set_title("σ–u diagram: the same numbered states", fontsize=10)
+                    pad=pad)
+    ax_su.set_title("σ–u diagram: the same numbered states", fontsize=10,
+                    pad=pad if su_title_pad else None)
     figure.suptitle(title, fontsize=12, y=0.985)
-    return figure, ax_xt, ax_su, ax_record
 
 
 def xt_record_figure(solution, title: str, size=(13.0, 6.8), bottom: float = 0.2,
