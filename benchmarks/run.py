@@ -24,7 +24,7 @@ import numpy as np
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
-from fronttrack.engine import run  # noqa: E402
+from fronttrack.runner import run  # noqa: E402
 from fronttrack.scene import Accuracy, Layer, Probe, Scene  # noqa: E402
 from materials.library import get  # noqa: E402
 

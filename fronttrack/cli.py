@@ -23,7 +23,8 @@ from pathlib import Path
 from materials import MaterialError, NoSolutionError, StateOutOfRangeError, library
 
 from .damage import FractureLimitError
-from .engine import EventLimitError, run
+from .engine import EventLimitError
+from .runner import run
 from .impedance_match import format_table, impedance_match, to_json_dict
 from .scene import SceneError
 from .scene_file import load_scene

@@ -24,6 +24,7 @@ from __future__ import annotations
 
 import time
 
+from .engine import Engine
 from .scene import Scene, SpallCriterion
 
 MAX_FRACTURES = 64
@@ -86,18 +87,18 @@ def first_failure(solution, spacing: float, fractures) -> tuple[float, float] | 
     for x in stations(scene):
         if any(abs(x - fx) <= max(spacing, 1e-12 * scene.length) for fx, _ in fractures):
             continue
-        t = failure_time(solution.history(x), scene.t_end, criterion)
+        t = failure_time(solution.cell_history(x), scene.t_end, criterion)
         if t is not None and (best is None or t < best[1]):
             best = (x, t)
     return best
 
 
-def run_with_damage(scene: Scene, engine_class, progress=None):
+def run_with_damage(scene: Scene, progress=None):
     """Solve ``scene`` with its cumulative-damage criterion (see the module docstring).
 
-    ``engine_class`` is ``fronttrack.engine.Engine``.  Each failure found adds a
-    fracture and the scene is run again; the returned solution has them all, and
-    its ``accuracy_report["spall_criterion"]`` records the criterion and the runs.
+    Each failure found adds a fracture and the scene is run again; the returned
+    solution has them all, and its ``accuracy_report["spall_criterion"]`` records the
+    criterion and the runs.
     """
     criterion = scene.spall_criterion
     spacing = scene.accuracy.spall_spacing or 0.0
@@ -105,7 +106,7 @@ def run_with_damage(scene: Scene, engine_class, progress=None):
     started = time.perf_counter()
     events = 0
     while True:
-        solution = engine_class(scene, progress, fractures=fractures).run()
+        solution = Engine(scene, progress, fractures=fractures).run()
         events += solution.stats["events"]
         found = first_failure(solution, spacing, fractures)
         if found is None:

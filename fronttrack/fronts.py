@@ -1,41 +1,43 @@
 """Fronts and regions: the geometric objects of an X–t diagram.
 
-Between events every front is a straight line in the Lagrangian X–t plane and
-every region a constant state.  The engine keeps the live fronts in a doubly
-linked list ordered by X (only neighbours can meet first); each front knows
-the region to its right.  A front's neighbouring regions never change during
-its life, so a finished front records the ids of the two regions it separates.
+Between events every front is a straight line in the Lagrangian X–t plane and every
+region a constant state.  The engine keeps the live fronts in a doubly linked list
+ordered by X (only neighbours can meet first); each front knows the region to its
+right.  A front's neighbouring regions never change during its life, so a finished
+front records the ids of the two regions it separates.
 
-Front kinds:
+A ray is one characteristic of a simple wave (``characteristics.simple_waves``): it
+carries its own Riemann invariant (``invariant``: ``J+`` for a right-going ray,
+``J-`` for a left-going one); the regions beside it are cells of the wave, each
+constant at the state of its middle, and ``Region.table`` is the isentrope they lie
+on (``characteristics.isentrope``).  Contacts, gaps and boundaries are vertical in X–t.
 
-- ``shock``: a jump satisfying the Rankine–Hugoniot conditions (also the
-  rarefaction shocks of Hugoniot release and of linear elastic solids);
-- ``ray``: one characteristic of a discretised fan (``fan`` groups them);
-- ``interface``: the contact between two layers (``bond``: bonded/unbonded);
-- ``contact``: an entropy jump left inside a material by an interaction;
-- ``gap``: an interface or spall plane that has opened (two free surfaces);
-- ``boundary``: the left or right end of the stack.
-
-Contacts, gaps and boundaries are vertical in X–t (they do not move in X).
+The engine's ``Front`` and ``Region`` are mutable and linked; a ``Solution`` hands out
+``FrontRecord`` and ``RegionRecord``, frozen and without links.
 """
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 
 from materials import State
 
-WAVE_KINDS = ("shock", "ray")
-SITE_KINDS = ("interface", "contact", "gap", "boundary")
+from .kinds import FrontKind
+
+UNKNOWN = object()
+"""A region's isentrope not looked up yet."""
 
 
-@dataclass(eq=False)
+@dataclass(eq=False, slots=True)
 class Region:
     """A region of constant state, with the chains of points bounding it.
 
-    ``left_points`` and ``right_points`` are ``(X, t)`` vertices (m, s) of its
-    left and right boundaries from bottom to top; the polygon is the left chain
-    followed by the reversed right chain.
+    ``left_points`` and ``right_points`` are ``(X, t)`` vertices (m, s) of its left and
+    right boundaries from bottom to top; the polygon is the right chain followed by the
+    reversed left chain.  ``in_fan``: a cell inside a simple wave or a lattice.
+    ``table``: its isentrope (``UNKNOWN`` until looked up, ``None`` if it has none);
+    ``invariants``: its ``(J+, J-)`` on that table, once known.
     """
 
     id: int
@@ -43,50 +45,56 @@ class Region:
     material: object
     layer: int
     t_start: float
-    left_points: list = field(default_factory=list)
-    right_points: list = field(default_factory=list)
+    left_points: list
+    right_points: list
     t_end: float | None = None
     in_fan: bool = False
+    table: object = UNKNOWN
+    invariants: tuple | None = None
 
     def polygon(self) -> list[tuple[float, float]]:
         """Closed boundary as ``(X, t)`` vertices (m, s), counter-clockwise."""
-        points = [*self.right_points, *reversed(self.left_points)]
-        cleaned = []
-        for p in points:
-            if not cleaned or p != cleaned[-1]:
-                cleaned.append(p)
-        if len(cleaned) > 1 and cleaned[0] == cleaned[-1]:
-            cleaned.pop()
-        return cleaned
+        return polygon_of(self.left_points, self.right_points)
 
 
-@dataclass(eq=False)
+def polygon_of(left_points, right_points) -> list[tuple[float, float]]:
+    """The polygon of a region from its left and right chains (repeated points removed)."""
+    points = [*right_points, *reversed(left_points)]
+    cleaned = []
+    for p in points:
+        if not cleaned or p != cleaned[-1]:
+            cleaned.append(p)
+    if len(cleaned) > 1 and cleaned[0] == cleaned[-1]:
+        cleaned.pop()
+    return cleaned
+
+
+@dataclass(eq=False, slots=True)
 class Front:
-    """A live or finished front.
+    """A live or finished front (engine side, linked to its neighbours).
 
-    Position ``X(t) = x0 + speed (t - t0)`` (m, s, m/s) for ``t0 <= t <= t1``.
-    ``wave`` links successive segments of one physical wave (a shock weakened
-    by a fan is a chain of segments with one ``wave`` id); ``fan``/``ray_index``
-    place a ray in its fan.  For sites: ``bond`` (``"bonded"``/``"unbonded"``),
-    ``strength`` (tension it carries, Pa), ``side`` of a boundary, and the
-    gap's ``gap_width`` (Eulerian, m) at ``gap_time``.  ``history`` records
-    ``(t, kind)`` changes of a site's kind (an interface that opens into a gap);
-    ``boundary_steps`` the ``(t, value)`` steps of a boundary's prescribed history;
-    ``earlier_regions`` records ``(t, region_id)``: the region on the right
-    until ``t``, when two neighbouring regions merged into a new one.
+    Position ``X(t) = x0 + speed (t - t0)`` (m, s, m/s) for ``t0 <= t <= t1``.  ``wave``
+    links successive segments of one physical shock; ``fan``/``ray_index``/``ray_count``
+    place a ray in its simple wave and ``invariant`` is its own Riemann invariant (m/s,
+    NaN for a ray without an isentrope table).  For sites: ``bond``, ``strength``
+    (tension it carries, Pa), ``side`` of a boundary, and the gap's ``gap_width``
+    (Eulerian, m) at ``gap_time``.  ``history`` records ``(t, kind)`` changes of a site's
+    kind; ``boundary_steps`` the ``(t, value)`` steps of a prescribed history;
+    ``earlier_regions`` records ``(t, region_id)``: the region on the right until ``t``.
     """
 
     id: int
-    kind: str
+    kind: FrontKind
     x0: float
     t0: float
     speed: float = 0.0
+    direction: int = 0
+    jump: float = 0.0
     wave: int | None = None
     fan: int | None = None
     ray_index: int = 0
     ray_count: int = 0
-    direction: int = 0
-    jump: float = 0.0
+    invariant: float = math.nan
     bond: str = ""
     strength: float = 0.0
     side: str = ""
@@ -107,7 +115,61 @@ class Front:
 
     @property
     def is_site(self) -> bool:
-        return self.kind in SITE_KINDS
+        return self.kind.is_site
+
+    def position(self, t: float) -> float:
+        """Lagrangian position (m) at time ``t`` (s)."""
+        if self.speed == 0.0:
+            return self.x0
+        return self.x0 + self.speed * (t - self.t0)
+
+    def record(self) -> FrontRecord:
+        """The finished front as a frozen record."""
+        return FrontRecord(
+            id=self.id, kind=self.kind, x0=self.x0, t0=self.t0, x1=self.x1, t1=self.t1,
+            speed=self.speed, direction=self.direction, jump=self.jump, wave=self.wave,
+            fan=self.fan, ray_index=self.ray_index, ray_count=self.ray_count,
+            invariant=self.invariant, bond=self.bond, side=self.side,
+            left_region=self.left_region, right_region_id=self.right_region_id,
+            history=tuple(self.history), earlier_regions=tuple(self.earlier_regions))
+
+
+@dataclass(frozen=True, slots=True)
+class FrontRecord:
+    """A front of a solution: ``X = x0 + speed (t - t0)`` from ``t0`` to ``t1`` (m, s).
+
+    ``kind`` (a ``FrontKind``); for waves ``direction`` (+1 right-going), ``jump`` (the
+    stress behind minus ahead, Pa), ``wave`` (segments of one shock share it), ``fan``,
+    ``ray_index``, ``ray_count`` and ``invariant`` (a ray's own Riemann invariant, m/s);
+    for sites ``bond``, ``side`` and ``history`` (``(t, kind)`` changes of kind);
+    ``left_region`` and ``right_region_id`` the regions it separates, and
+    ``earlier_regions`` the ``(t, id)`` regions on its right before ``t``.
+    """
+
+    id: int
+    kind: FrontKind
+    x0: float
+    t0: float
+    x1: float | None
+    t1: float | None
+    speed: float = 0.0
+    direction: int = 0
+    jump: float = 0.0
+    wave: int | None = None
+    fan: int | None = None
+    ray_index: int = 0
+    ray_count: int = 0
+    invariant: float = math.nan
+    bond: str = ""
+    side: str = ""
+    left_region: int | None = None
+    right_region_id: int | None = None
+    history: tuple = ()
+    earlier_regions: tuple = ()
+
+    @property
+    def is_site(self) -> bool:
+        return self.kind.is_site
 
     def position(self, t: float) -> float:
         """Lagrangian position (m) at time ``t`` (s)."""
@@ -116,14 +178,36 @@ class Front:
         return self.x0 + self.speed * (t - self.t0)
 
 
-def inside_fan(left: Front, right: Front) -> bool:
-    """True when the region between ``left`` and ``right`` lies inside a fan.
+@dataclass(frozen=True, slots=True)
+class RegionRecord:
+    """A region of a solution: a constant ``state`` of ``material`` in ``layer`` over the
+    polygon ``vertices`` (``(X, t)``, m and s) from ``t_start`` to ``t_end``; ``in_fan``
+    marks a cell of a simple wave or a lattice."""
 
-    It does when both are rays of one direction and of one fan, or both are
-    one-ray fans (the train of single rays that a fan sends off a surface, one
-    reflection at a time).  The constant states ahead of a fan's head and
-    behind its tail are not inside it.
-    """
-    if left.kind != "ray" or right.kind != "ray" or left.direction != right.direction:
+    id: int
+    state: State
+    material: object
+    layer: int
+    t_start: float
+    t_end: float | None
+    in_fan: bool
+    vertices: tuple
+
+    def polygon(self) -> list[tuple[float, float]]:
+        """Closed boundary as ``(X, t)`` vertices (m, s), counter-clockwise."""
+        return list(self.vertices)
+
+    @classmethod
+    def of(cls, region: Region) -> RegionRecord:
+        return cls(id=region.id, state=region.state, material=region.material,
+                   layer=region.layer, t_start=region.t_start, t_end=region.t_end,
+                   in_fan=region.in_fan, vertices=tuple(region.polygon()))
+
+
+def inside_fan(left: Front, right: Front) -> bool:
+    """True when the region between ``left`` and ``right`` is a cell of a simple wave:
+    both are rays of one direction, of one fan or each a one-ray wave."""
+    if left.kind != FrontKind.RAY or right.kind != FrontKind.RAY \
+            or left.direction != right.direction:
         return False
     return left.fan == right.fan or (left.ray_count == 1 and right.ray_count == 1)

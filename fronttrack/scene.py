@@ -88,28 +88,32 @@ class Probe:
 class Accuracy:
     """How exactly to compute, and what to neglect.
 
-    ``rays_per_fan``: rays for a fan spanning the scene's largest stress jump
-    (weaker fans get proportionally fewer, at least one).  ``stress_tolerance``
-    (Pa), if given, is the largest stress step carried by one ray and overrides
-    ``rays_per_fan``.  ``negligible_stress`` (Pa): waves weaker than this are
-    dropped (and the dropped total reported); ``None`` means 1e-6 of the
-    scene's stress scale.  ``release``: ``"isentrope"`` (physical) or
-    ``"hugoniot"`` (rarefaction shocks, the impedance-match shortcut).
-    ``entropy_contacts``: keep the contacts that interactions leave inside a
-    material (neglecting them changes volume and energy, never stress or
-    velocity).  ``max_events``: stop with an error beyond this many events.
-    ``spall_spacing`` (m): no new spall plane closer than this to an earlier one
-    (the tension there is carried and reported, unless it would leave the
-    equations of state); ``None`` or 0 allows any spacing.  ``contact_resolution`` (m):
-    an entropy contact born closer than this to the neighbouring contact is merged
-    like a negligible one (counted in the report); 0, the default, keeps every one.
-    ``estimate_error``: run the scene
-    again at half the ray step and report the estimated error of the records
+    ``stress_tolerance`` (Pa) and ``velocity_tolerance`` (m/s): the accuracy wanted of
+    stress and velocity records; ``None`` means 1e-3 of the scene's stress scale (and
+    that over the largest impedance).  The spacing of the characteristics of every
+    simple wave follows from them and from the materials' thresholds
+    (``fronttrack.resolution``).  ``rays_per_fan`` (characteristics for a fan spanning
+    the scene's largest stress) or ``characteristic_step`` (Pa, the largest stress step
+    between characteristics) override that choice.  ``negligible_stress`` (Pa): waves
+    weaker than this are dropped (and the dropped total reported); ``None`` chooses one
+    from the resolution.  ``release``: ``"isentrope"`` (physical) or ``"hugoniot"``
+    (rarefaction shocks, the impedance-match shortcut).  ``entropy_contacts``: keep the
+    contacts that interactions leave inside a material (neglecting them changes volume
+    and energy, never stress or velocity).  ``max_events``: stop with an error beyond
+    this many events.  ``spall_spacing`` (m): no new spall plane closer than this to an
+    earlier one (the tension there is carried and reported, unless it would leave the
+    equations of state); ``None`` leaves it to the fracture zone the threshold model
+    predicts.  ``contact_resolution`` (m): an entropy contact born closer than this to
+    the neighbouring contact is merged like a negligible one (counted in the report);
+    0, the default, keeps every one.  ``estimate_error``: run the scene again at half the
+    characteristic step and report the estimated error of the records
     (``fronttrack.error_estimate``) when it has fans.
     """
 
-    rays_per_fan: int = 16
     stress_tolerance: float | None = None
+    velocity_tolerance: float | None = None
+    rays_per_fan: int | None = None
+    characteristic_step: float | None = None
     negligible_stress: float | None = None
     release: str = "isentrope"
     entropy_contacts: bool = True
@@ -234,11 +238,14 @@ class Scene:
                 raise SceneError(f"probe[{probe.name}].at: position {probe.at * 1e3:.6g} mm is "
                                  f"outside the stack (0 to {self.length * 1e3:.6g} mm)")
         acc = self.accuracy
-        if not (isinstance(acc.rays_per_fan, int) and 1 <= acc.rays_per_fan <= 100_000):
+        if acc.rays_per_fan is not None and not (
+                isinstance(acc.rays_per_fan, int) and 1 <= acc.rays_per_fan <= 100_000):
             raise SceneError(f"accuracy.rays_per_fan: must be an integer in 1..100000, "
                              f"got {acc.rays_per_fan!r}")
-        if acc.stress_tolerance is not None:
-            _finite_positive("accuracy.stress_tolerance", acc.stress_tolerance, "Pa")
+        for name, unit in (("stress_tolerance", "Pa"), ("velocity_tolerance", "m/s"),
+                           ("characteristic_step", "Pa")):
+            if getattr(acc, name) is not None:
+                _finite_positive(f"accuracy.{name}", getattr(acc, name), unit)
         if acc.negligible_stress is not None and not acc.negligible_stress >= 0.0:
             raise SceneError(f"accuracy.negligible_stress: must be >= 0 Pa, "
                              f"got {acc.negligible_stress!r}")

@@ -6,9 +6,11 @@ file reads as a lab notebook and converts to the SI ``Scene`` of
 
     title = "Cu on Al"
     t_end = "3 us"
-    [accuracy]              # rays_per_fan, stress_tolerance, negligible_stress,
-                            # release, entropy_contacts, max_events, spall_spacing,
-                            # contact_resolution, estimate_error
+    [accuracy]              # stress_tolerance, velocity_tolerance (records),
+                            # rays_per_fan or characteristic_step (overrides),
+                            # negligible_stress, release, entropy_contacts,
+                            # max_events, spall_spacing, contact_resolution,
+                            # estimate_error
     [materials.MyPMMA]      # inline material: model and its fields with units
     model = "mie-gruneisen"
     rho0 = "1186 kg/m3"
@@ -58,7 +60,8 @@ _TOP_KEYS = ("title", "t_end", "accuracy", "materials", "layer", "left", "right"
 _LAYER_KEYS = ("material", "thickness", "velocity", "stress", "name", "bond")
 _BOUNDARY_KEYS = ("kind", "value", "history")
 _PROBE_KEYS = ("name", "at")
-_ACCURACY_KEYS = ("rays_per_fan", "stress_tolerance", "negligible_stress", "release",
+_ACCURACY_KEYS = ("rays_per_fan", "stress_tolerance", "velocity_tolerance",
+                  "characteristic_step", "negligible_stress", "release",
                   "entropy_contacts", "max_events", "spall_spacing", "contact_resolution",
                   "estimate_error")
 _SPALL_KEYS = ("criterion", "threshold", "exponent", "damage", "incubation_time", "stations")
@@ -251,10 +254,15 @@ def _probe(table: dict[str, Any], index: int) -> Probe:
 def _accuracy(table: dict[str, Any]) -> Accuracy:
     _check_keys(table, _ACCURACY_KEYS, "accuracy")
     defaults = Accuracy()
+    rays = table.get("rays_per_fan")
     return Accuracy(
-        rays_per_fan=_typed(table, "rays_per_fan", int, defaults.rays_per_fan),
+        rays_per_fan=None if rays is None else _typed(table, "rays_per_fan", int, None),
         stress_tolerance=_optional_quantity(table, "stress_tolerance", "stress",
                                             "accuracy.stress_tolerance", None),
+        velocity_tolerance=_optional_quantity(table, "velocity_tolerance", "velocity",
+                                              "accuracy.velocity_tolerance", None),
+        characteristic_step=_optional_quantity(table, "characteristic_step", "stress",
+                                               "accuracy.characteristic_step", None),
         negligible_stress=_optional_quantity(table, "negligible_stress", "stress",
                                              "accuracy.negligible_stress", None),
         release=_typed(table, "release", str, defaults.release),

@@ -1,31 +1,42 @@
 """The solution of a scene: fronts, regions, events, and the queries on them.
 
-Everything a user asks for is a query on the exact piecewise-constant
-solution: the state at ``(X, t)``, the history at a Lagrangian station (a step
-function with exact step times), a profile at an instant, the Eulerian
-position ``x(X, t) = x(X, 0) + int u dt``, free-surface velocities, the largest
-tension, the spall events, and the conservation balance
+The engine's solution is a tiling of the X–t plane by cells of constant state
+separated by straight fronts.  Shocks and contacts are exact jumps; rays are the
+characteristics of simple waves and lattices, and the cells between them carry the
+state of their middle.  Every query a user makes reads the solution continuously
+(``characteristics.reconstruct``): a history at a Lagrangian station, a profile at
+an instant and ``state_at`` interpolate the Riemann invariants between rays (exact
+at each ray, second order between them) and jump only at shocks and contacts.
+
+The conservation balance
 
     d/dt int rho0 u dX           = sigma(left) - sigma(right),
     d/dt int rho0 (e + u^2/2) dX = (sigma u)(left) - (sigma u)(right),
 
-(stress positive in compression), integrated exactly over the boundary
-histories.  Units are SI throughout.
+(stress positive in compression) is computed on the cells the engine advanced and
+the boundary histories they give, exactly: its residual measures the engine itself.
+Units are SI throughout.
 """
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from dataclasses import dataclass, field
 
 import numpy as np
 
+from characteristics.reconstruct import Cell, Crossing, knots
 from materials import State
+
+from .fronts import UNKNOWN, FrontRecord, RegionRecord
+from .kinds import FrontKind
 
 
 @dataclass(frozen=True)
 class EventRecord:
-    """One interaction: time (s), position (m), kind, ids of the fronts in and out."""
+    """One interaction: time (s), position (m), kind, ids of the fronts in and out;
+    ``nodes`` counts the nodes of a lattice (one event)."""
 
     t: float
     x: float
@@ -33,17 +44,21 @@ class EventRecord:
     incoming: list
     outgoing: list
     site: int | None = None
+    nodes: int = 0
 
 
 @dataclass(frozen=True)
 class SpallRecord:
-    """A fracture: position ``x`` (m), time ``t`` (s), the tension the bonded problem
-    would have reached (Pa, positive) and the strength that failed (Pa)."""
+    """A fracture: position ``x`` (m), time ``t`` (s), the tension reached (Pa, positive)
+    and the strength that failed (Pa); ``layer`` and, when the threshold fractured a
+    zone around it, that zone's ``(x_lo, x_hi)`` (m)."""
 
     x: float
     t: float
     tension: float
     strength: float
+    layer: int = 0
+    zone: tuple | None = None
 
 
 class StateSeries:
@@ -69,87 +84,262 @@ class StateSeries:
 
 @dataclass(frozen=True)
 class History(StateSeries):
-    """A step-function record at one station: ``values[k]`` holds on ``[t[k], t[k+1])``."""
+    """A record along one coordinate (time at a station, or X at an instant).
+
+    Piece ``k`` starts at ``t[k]`` with ``states[k]`` and runs linearly to ``ends[k]`` just
+    before ``t[k + 1]`` (the last piece to the record's end ``stop``).  A piece with
+    ``ends[k] == states[k]`` is constant; a shock is a jump between ``ends[k - 1]`` and
+    ``states[k]``; inside a simple wave the pieces join continuously.  (The name ``t``
+    is kept for the coordinate of a profile too.)
+    """
 
     t: np.ndarray
     states: list
+    ends: list
+    stop: float
 
-    def integral(self, values: np.ndarray, t_end: float) -> float:
-        """Exact integral of a step quantity from 0 to ``t_end`` (s)."""
-        edges = np.append(self.t, t_end)
-        widths = np.clip(np.minimum(edges[1:], t_end) - edges[:-1], 0.0, None)
-        return float(np.dot(values, widths))
+    @property
+    def sigma_end(self) -> np.ndarray:
+        return np.array([s.sigma for s in self.ends])
+
+    @property
+    def u_end(self) -> np.ndarray:
+        return np.array([s.u for s in self.ends])
+
+    def samples(self, quantity: str = "sigma") -> tuple[np.ndarray, np.ndarray]:
+        """Points to draw the record: each piece's start and end (jumps are vertical)."""
+        starts = np.array([getattr(s, quantity) for s in self.states])
+        ends = np.array([getattr(s, quantity) for s in self.ends])
+        coord = np.empty(2 * len(self.t))
+        coord[0::2] = self.t
+        coord[1::2] = np.append(self.t[1:], self.stop)
+        values = np.empty(2 * len(self.t))
+        values[0::2], values[1::2] = starts, ends
+        return coord, values
+
+    def at(self, where, quantity: str = "sigma") -> np.ndarray:
+        """The record's value at the coordinates ``where`` (right limit at a jump)."""
+        where = np.atleast_1d(np.asarray(where, dtype=float))
+        k = np.clip(np.searchsorted(self.t, where, side="right") - 1, 0, len(self.t) - 1)
+        a = np.array([getattr(s, quantity) for s in self.states])
+        b = np.array([getattr(s, quantity) for s in self.ends])
+        right = np.append(self.t[1:], self.stop)
+        width = right - self.t
+        f = np.where(width[k] > 0.0, (where - self.t[k]) / np.where(width[k] > 0, width[k], 1),
+                     0.0)
+        return a[k] + np.clip(f, 0.0, 1.0) * (b[k] - a[k])
+
+    def l1_distance(self, other: History, quantity: str = "sigma") -> float:
+        """Exact integral of ``|self - other|`` over the common span of two records (both
+        are linear between the union of their break points)."""
+        stop = min(self.stop, other.stop)
+        edges = np.union1d(np.append(self.t, stop), np.append(other.t, stop))
+        edges = edges[edges <= stop]
+        lo, hi = edges[:-1], edges[1:]
+        inside = 1e-9 * (hi - lo)
+        d0 = self.at(lo + inside, quantity) - other.at(lo + inside, quantity)
+        d1 = self.at(hi - inside, quantity) - other.at(hi - inside, quantity)
+        width = hi - lo
+        same_sign = d0 * d1 >= 0.0
+        with np.errstate(divide="ignore", invalid="ignore"):
+            crossing = np.where(same_sign, 0.0, np.abs(d0) / (np.abs(d0) + np.abs(d1)))
+        area = np.where(same_sign, 0.5 * np.abs(d0 + d1) * width,
+                        0.5 * width * (np.abs(d0) * crossing + np.abs(d1) * (1.0 - crossing)))
+        return float(np.sum(area))
+
+    def integral(self, values: np.ndarray, t_end: float, ends: np.ndarray | None = None
+                 ) -> float:
+        """Exact integral from 0 to ``t_end`` of a quantity linear on each piece (its
+        values at the starts, and at the ends if they differ)."""
+        ends = values if ends is None else ends
+        edges = np.append(self.t, self.stop)
+        total = 0.0
+        for k in range(len(self.t)):
+            a, b = edges[k], min(edges[k + 1], t_end)
+            if b <= a:
+                continue
+            width = edges[k + 1] - a
+            f = (b - a) / width if width > 0 else 1.0
+            mid_end = values[k] + f * (ends[k] - values[k])
+            total += 0.5 * (values[k] + mid_end) * (b - a)
+        return total
+
+
+def _history(coords, states, stop: float, start: float = 0.0) -> History:
+    """Pieces from reconstruction knots (equal consecutive coordinates make a jump)."""
+    t, starts, ends = [], [], []
+    for k in range(len(coords) - 1):
+        a, b = coords[k], coords[k + 1]
+        if b <= a:
+            continue
+        s0, s1 = states[k], states[k + 1]
+        if t and s0 == s1 == starts[-1] == ends[-1]:
+            continue  # a constant piece continuing the previous one
+        t.append(a)
+        starts.append(s0)
+        ends.append(s1)
+    if not t:
+        t, starts, ends = [start], [states[-1]], [states[-1]]
+    t[0] = start
+    return History(t=np.array(t), states=starts, ends=ends, stop=stop)
 
 
 @dataclass
 class Solution:
-    """The exact front-tracking solution of one scene."""
+    """The front-tracking solution of one scene."""
 
     scene: object
-    fronts: list
-    regions: list
+    engine_fronts: list
+    engine_regions: list
+    patches: list
     events: list
     spalls: list
     stats: dict
     accuracy_report: dict
     min_stress: tuple | None
     initial_states: list
-    _arrays: dict = field(default_factory=dict, repr=False)
+    counters: object = None
+    fracture_zones: list = field(default_factory=list)
+    tables: object = None
+    _cache: dict = field(default_factory=dict, repr=False)
 
     @classmethod
     def from_engine(cls, engine, elapsed: float) -> Solution:
-        fronts = engine.fronts
+        counters = engine.counters
+        rays = sum(f.kind == FrontKind.RAY for f in engine.fronts) + sum(
+            len(p.seg_id) for p in engine.patches)
         stats = {
-            "events": len(engine.events),
-            "fronts": len(fronts),
-            "regions": len(engine.regions),
-            "rays": sum(f.kind == "ray" for f in fronts),
-            "shocks": sum(f.kind == "shock" for f in fronts),
-            "contacts": sum(f.kind == "contact" for f in fronts),
+            "events": counters.events,
+            "lattices": counters.lattices,
+            "lattice_nodes": counters.nodes,
+            "riemann_solves": counters.riemann_solves,
+            "isentrope_tables": counters.tables,
+            "fronts": len(engine.fronts) + sum(len(p.seg_id) for p in engine.patches),
+            "regions": len(engine.regions) + sum(len(p.cell_id) for p in engine.patches),
+            "rays": rays,
+            "shocks": sum(f.kind == FrontKind.SHOCK for f in engine.fronts),
+            "contacts": sum(f.kind == FrontKind.CONTACT for f in engine.fronts),
             "solve_time": elapsed,
         }
-        report = {
-            "release": engine.acc.release,
-            "entropy_contacts": engine.acc.entropy_contacts,
-            "ray_stress_step": engine.ray_step,
-            "stress_scale": engine.stress_scale,
-            "negligible_stress": engine.negligible,
-            "dropped_waves": engine.dropped_count,
-            "dropped_stress_total": engine.dropped_stress,
-            "neglected_entropy_volume_jump": engine.neglected_entropy,
-            "neglected_entropy_contacts": engine.neglected_contacts,
-            "contact_resolution": engine.acc.contact_resolution,
-            "contacts_below_resolution": engine.unresolved_contacts,
-            "spall_spacing": [engine.spall_spacing(i) for i in range(len(engine.scene.layers))],
-            "suppressed_spalls": engine.suppressed_spalls,
-            "largest_suppressed_tension": engine.suppressed_tension,
+        acc = engine.acc
+        report = engine.resolution.report() | {
+            "entropy_contacts": acc.entropy_contacts,
+            "dropped_waves": counters.dropped_waves,
+            "dropped_stress_total": counters.dropped_stress,
+            "neglected_entropy_volume_jump": counters.neglected_entropy,
+            "neglected_entropy_contacts": counters.neglected_contacts,
+            "contact_resolution": acc.contact_resolution,
+            "contacts_below_resolution": counters.unresolved_contacts,
+            "spall_spacing": acc.spall_spacing,
+            "fracture_zones": [{"layer": z.layer, "x_lo": z.x_lo, "x_hi": z.x_hi, "t": z.t}
+                               for z in engine.fracture_zones],
+            "suppressed_spalls": counters.suppressed_spalls,
+            "largest_suppressed_tension": counters.suppressed_tension,
         }
-        return cls(scene=engine.scene, fronts=fronts, regions=engine.regions,
+        return cls(scene=engine.scene, engine_fronts=engine.fronts,
+                   engine_regions=engine.regions, patches=engine.patches,
                    events=engine.events, spalls=engine.spalls, stats=stats,
                    accuracy_report=report, min_stress=engine.min_stress,
-                   initial_states=engine.initial_states)
+                   initial_states=engine.initial_states, counters=counters,
+                   fracture_zones=engine.fracture_zones, tables=engine.tables)
 
-    # --- geometry -----------------------------------------------------------
-    def _front_arrays(self):
-        """Front segments as arrays: one segment per front and per region on its right."""
-        if not self._arrays:
-            x0, t0, t1, speed, right = [], [], [], [], []
-            for f in self.fronts:
+    # --- records ------------------------------------------------------------------------
+    @property
+    def fronts(self) -> list[FrontRecord]:
+        """Every front as a frozen record (segments inside lattices included)."""
+        if "fronts" not in self._cache:
+            records = [f.record() for f in self.engine_fronts]
+            for patch in self.patches:
+                records += patch.front_records()
+            self._cache["fronts"] = records
+        return self._cache["fronts"]
+
+    @property
+    def regions(self) -> list[RegionRecord]:
+        """Every region as a frozen record (cells inside lattices included)."""
+        if "regions" not in self._cache:
+            records = [RegionRecord.of(r) for r in self.engine_regions]
+            for patch in self.patches:
+                records += patch.region_records()
+            self._cache["regions"] = records
+        return self._cache["regions"]
+
+    # --- geometry -----------------------------------------------------------------------
+    def _segments(self) -> dict:
+        """Front segments as arrays: one per front and per region on its right."""
+        if "segments" not in self._cache:
+            cols = {name: [] for name in ("x0", "t0", "t1", "speed", "right", "ray",
+                                          "family", "invariant")}
+            for f in self.engine_fronts:
                 if f.t1 is None or f.t1 < f.t0:
                     continue
                 start = f.t0
-                pieces = [*f.earlier_regions, (f.t1, f.right_region_id)]
-                for end, region in pieces:
-                    x0.append(f.position(start))
-                    t0.append(start)
-                    t1.append(end)
-                    speed.append(f.speed)
-                    right.append(-1 if region is None else region)
+                is_ray = f.kind == FrontKind.RAY
+                for end, region in [*f.earlier_regions, (f.t1, f.right_region_id)]:
+                    for name, value in (("x0", f.position(start)), ("t0", start),
+                                        ("t1", end), ("speed", f.speed),
+                                        ("right", -1 if region is None else region),
+                                        ("ray", is_ray), ("family", f.direction),
+                                        ("invariant", f.invariant)):
+                        cols[name].append(value)
                     start = end
-            self._arrays = {"x0": np.array(x0), "t0": np.array(t0), "t1": np.array(t1),
-                            "speed": np.array(speed), "right": np.array(right)}
-            self._region_by_id = {r.id: r for r in self.regions}
-        return self._arrays
+            arrays = {name: np.array(values) for name, values in cols.items()}
+            for patch in self.patches:
+                extra = {"x0": patch.seg_x0, "t0": patch.seg_t0, "t1": patch.seg_t1,
+                         "speed": patch.seg_speed, "right": patch.seg_right,
+                         "ray": np.ones(len(patch.seg_id), bool),
+                         "family": patch.seg_direction, "invariant": patch.seg_invariant}
+                for name in arrays:
+                    arrays[name] = np.concatenate([arrays[name], extra[name]])
+            arrays["right"] = arrays["right"].astype(int)
+            arrays["ray"] = arrays["ray"].astype(bool)
+            self._cache["segments"] = arrays
+        return self._cache["segments"]
+
+    def _cells(self) -> dict:
+        """Where each region id lives: an engine region, or a patch and an index."""
+        if "cells" not in self._cache:
+            where = {r.id: r for r in self.engine_regions}
+            for patch in self.patches:
+                for i, rid in enumerate(patch.cell_id.tolist()):
+                    where[rid] = (patch, i)
+            self._cache["cells"] = where
+        return self._cache["cells"]
+
+    def _region_state(self, region_id: int) -> State:
+        found = self._cells()[region_id]
+        return found.state if not isinstance(found, tuple) else found[0].state(found[1])
+
+    def _region_cell(self, region_id: int) -> Cell:
+        """A region as the reconstruction sees it: its state, table and invariants."""
+        found = self._cells()[region_id]
+        if isinstance(found, tuple):
+            patch, i = found
+            table = patch.table
+            state = patch.state(i)
+            return Cell(state, table, table.invariants(state) if table is not None else None)
+        table = found.table
+        if table is UNKNOWN:
+            table = (self.tables.table(found.material, found.state)
+                     if self.tables is not None and self.accuracy_report.get(
+                         "release", "isentrope") == "isentrope" else None)
+            found.table = table
+        if table is None:
+            return Cell(found.state)
+        if found.invariants is None:
+            found.invariants = table.invariants(found.state)
+        return Cell(found.state, table, found.invariants)
+
+    def region_record(self, region_id: int) -> RegionRecord:
+        """The frozen record of region ``region_id``."""
+        found = self._cells()[region_id]
+        if isinstance(found, tuple):
+            patch, i = found
+            return RegionRecord(id=region_id, state=patch.state(i), material=patch.material,
+                                layer=patch.layer, t_start=float(patch.cell_t0[i]),
+                                t_end=float(patch.cell_t1[i]), in_fan=True,
+                                vertices=tuple(patch.polygon(i)))
+        return RegionRecord.of(found)
 
     def _spatial_order(self, index: np.ndarray, pos: np.ndarray, t: float) -> np.ndarray:
         """Order (left to right at time ``t``) of the front segments ``index``.
@@ -157,46 +347,60 @@ class Solution:
         Fronts at one point meet at an event there.  Those born at it are ordered as an
         instant later (fastest rightmost); those about to arrive, when ``t`` is within
         rounding of the event but before it, as an instant earlier (slowest rightmost).
-        Each front counts as the one its age or its remaining life says it is closer to.
         Last key: the latest-born.
         """
-        a = self._front_arrays()
+        a = self._segments()
         speed, t0, t1 = a["speed"][index], a["t0"][index], a["t1"][index]
         arriving = (t1 - t) < (t - t0)
         return np.lexsort((t0, np.where(arriving, -speed, speed), pos[index]))
 
-    def region_at(self, x: float, t: float):
-        """The region containing Lagrangian position ``x`` (m) at time ``t`` (s).
-
-        On a front the region to its right is returned (to its left at the right end).
-        """
-        a = self._front_arrays()
+    def _region_id_at(self, x: float, t: float) -> int:
+        a = self._segments()
         t = min(max(t, 0.0), self.scene.t_end)
         live = (a["t0"] <= t) & ((a["t1"] > t) | (a["t1"] >= self.scene.t_end))
-        pos = a["x0"] + a["speed"] * (t - a["t0"])
-        pos = np.where(a["speed"] == 0.0, a["x0"], pos)
+        pos = np.where(a["speed"] == 0.0, a["x0"], a["x0"] + a["speed"] * (t - a["t0"]))
         candidates = np.nonzero(live & (pos <= x) & (a["right"] >= 0))[0]
         if candidates.size == 0:
             candidates = np.nonzero(live & (a["right"] >= 0))[0]
             best = candidates[np.argmin(pos[candidates])]
         else:
-            # rightmost front at or left of x, ties at one point ordered as below
             best = candidates[self._spatial_order(candidates, pos, t)[-1]]
-        return self._region_by_id[int(a["right"][best])]
+        return int(a["right"][best])
+
+    def region_at(self, x: float, t: float) -> RegionRecord:
+        """The cell containing Lagrangian position ``x`` (m) at time ``t`` (s).
+
+        On a front the cell to its right is returned (to its left at the right end).
+        """
+        return self.region_record(self._region_id_at(x, t))
 
     def state_at(self, x: float, t: float) -> State:
-        """State (stress Pa, velocity m/s, volume, energy) at ``(x, t)``."""
-        return self.region_at(x, t).state
+        """State (stress Pa, velocity m/s, volume, energy) at ``(x, t)``, read continuously
+        inside simple waves and lattices (``characteristics.reconstruct``)."""
+        profile = self._profile_near(x, t)
+        if profile is None:
+            return self._region_state(self._region_id_at(x, t))
+        return _state_in(profile, x)
 
-    def crossing_times(self, x: float) -> np.ndarray:
-        """Times (s) at which a moving front passes the station ``x`` (m)."""
-        a = self._front_arrays()
+    def cell_state_at(self, x: float, t: float) -> State:
+        """The state of the cell the engine kept at ``(x, t)`` (no reconstruction)."""
+        return self._region_state(self._region_id_at(x, t))
+
+    def _crossings(self, x: float) -> tuple[np.ndarray, np.ndarray]:
+        """Times (s) at which moving segments pass the station ``x`` (m), and which."""
+        a = self._segments()
         moving = a["speed"] != 0.0
         with np.errstate(divide="ignore", invalid="ignore"):
             tc = a["t0"] + (x - a["x0"]) / np.where(moving, a["speed"], 1.0)
         ok = moving & (tc >= a["t0"] - 1e-18) & (tc <= a["t1"] + 1e-18)
         ok &= tc < self.scene.t_end
-        return np.unique(tc[ok])
+        index = np.nonzero(ok)[0]
+        order = np.argsort(tc[index], kind="stable")
+        return tc[index][order], index[order]
+
+    def crossing_times(self, x: float) -> np.ndarray:
+        """Times (s) at which a moving front passes the station ``x`` (m)."""
+        return np.unique(self._crossings(x)[0])
 
     def station(self, at) -> float:
         """Lagrangian position (m) of a probe location: ``"left"``, ``"right"``, metres,
@@ -211,32 +415,76 @@ class Solution:
         return min(max(float(at), 0.0), self.scene.length)
 
     def history(self, at) -> History:
-        """Step-function history at a station: ``at`` is ``"left"``, ``"right"`` or X (m)."""
+        """The record at a station: ``at`` is ``"left"``, ``"right"``, a probe name or X (m).
+
+        Continuous inside simple waves and lattices, a jump at each shock (see
+        ``History``).
+        """
         x = self.station(at)
-        resolution = 1e-12 * self.scene.t_end
+        t_end = self.scene.t_end
+        times, index = self._crossings(x)
+        groups, cells = self._groups_along(times, index, lambda t: self._region_id_at(x, t),
+                                           t_end, 1e-12 * t_end)
+        coords, states = knots([g[0] for g in groups], [g[1] for g in groups], cells)
+        coords = [0.0, *coords, t_end]
+        states = [cells[0].state, *states, cells[-1].state]
+        end = self.scene.left if x == 0.0 else self.scene.right if x == self.scene.length \
+            else None
+        if end is not None:
+            states = [_held(end, t, s) for t, s in zip(coords, states, strict=True)]
+        return _history(coords, states, t_end)
+
+    def cell_history(self, at) -> History:
+        """The record of the cells the engine kept at a station: constant pieces."""
+        x = self.station(at)
+        t_end = self.scene.t_end
+        resolution = 1e-12 * t_end
         times = []
         for t in self.crossing_times(x):
             if t > resolution and (not times or t - times[-1] > resolution):
                 times.append(float(t))
-        edges = [0.0, *times, self.scene.t_end]
+        edges = [0.0, *times, t_end]
         starts, states = [], []
         for t0, t1 in zip(edges[:-1], edges[1:], strict=True):
             if t1 <= t0:
                 continue
-            state = self.state_at(x, 0.5 * (t0 + t1))
+            state = self.cell_state_at(x, 0.5 * (t0 + t1))
             if states and state == states[-1]:
                 continue
             starts.append(t0)
             states.append(state)
-        return History(t=np.array(starts), states=states)
+        return History(t=np.array(starts), states=states, ends=list(states), stop=t_end)
+
+    def _groups_along(self, coords, index, region_id_at, stop, resolution):
+        """Crossings grouped by coordinate, and the cells between the groups."""
+        a = self._segments()
+        groups = []
+        for c, i in zip(coords.tolist(), index.tolist(), strict=True):
+            if c <= resolution:
+                continue
+            crossing = Crossing(bool(a["ray"][i]) and not math.isnan(a["invariant"][i]),
+                                int(a["family"][i]), float(a["invariant"][i]))
+            if groups and c - groups[-1][0] <= resolution:
+                groups[-1][1].append(crossing)
+            else:
+                groups.append((c, [crossing]))
+        edges = [0.0, *(g[0] for g in groups), stop]
+        cells = [self._region_cell(region_id_at(0.5 * (lo + hi)))
+                 for lo, hi in zip(edges[:-1], edges[1:], strict=True)]
+        return groups, cells
 
     def probe_histories(self) -> dict:
         """Histories at every probe of the scene, by probe name."""
         return {p.name: self.history(p.at) for p in self.scene.probes}
 
-    def profile(self, t: float) -> list[tuple[float, float, object]]:
-        """``(x_left, x_right, region)`` intervals covering the stack at time ``t`` (s)."""
-        a = self._front_arrays()
+    def cells_at(self, t: float) -> list[tuple[float, float, RegionRecord]]:
+        """``(x_left, x_right, region)`` intervals of the cells the engine kept at time
+        ``t`` (s): the piecewise-constant solution behind ``profile``."""
+        return [(x0, x1, self.region_record(rid)) for x0, x1, rid in self._cell_ids_at(t)]
+
+    def _cell_ids_at(self, t: float) -> list[tuple[float, float, int]]:
+        """``(x_left, x_right, region_id)`` intervals of the cells at time ``t`` (s)."""
+        a = self._segments()
         t = min(max(t, 0.0), self.scene.t_end)
         live = (a["t0"] <= t) & ((a["t1"] > t) | (a["t1"] >= self.scene.t_end))
         pos = np.where(a["speed"] == 0.0, a["x0"], a["x0"] + a["speed"] * (t - a["t0"]))
@@ -245,34 +493,66 @@ class Solution:
         intervals = []
         for i, j in zip(order[:-1], order[1:], strict=True):
             if a["right"][i] >= 0 and pos[j] > pos[i]:
-                intervals.append((float(pos[i]), float(pos[j]),
-                                  self._region_by_id[int(a["right"][i])]))
+                intervals.append((float(pos[i]), float(pos[j]), int(a["right"][i])))
         return intervals
 
-    # --- derived quantities ---------------------------------------------------
-    def eulerian_position(self, at, t: float) -> float:
-        """Eulerian position (m) at time ``t`` of the material point at station ``at``.
+    def profile(self, t: float) -> History:
+        """The profile at time ``t`` (s) along Lagrangian X (the ``History`` coordinate is X,
+        m): continuous inside simple waves and lattices, a jump at shocks and contacts."""
+        key = ("profile", t)
+        if key not in self._cache:
+            self._cache[key] = self._build_profile(t)
+        return self._cache[key]
 
-        ``x(X, t) = x(X, 0) + int_0^t u dt``, with ``x(X, 0) = int_0^X v/v0 dX`` so
-        that a pre-stressed layer starts compressed.
+    def _build_profile(self, t: float) -> History:
+        a = self._segments()
+        cells = self._cell_ids_at(t)
+        length = self.scene.length
+        pos = np.where(a["speed"] == 0.0, a["x0"], a["x0"] + a["speed"] * (t - a["t0"]))
+        live = (a["t0"] <= t) & ((a["t1"] > t) | (a["t1"] >= self.scene.t_end))
+        region_ids = [rid for _, _, rid in cells]
+        coords = [x_lo for x_lo, _, _ in cells[1:]]
+        groups = []
+        for c in coords:
+            near = np.nonzero(live & (np.abs(pos - c) <= 1e-12 * length))[0]
+            groups.append([Crossing(bool(a["ray"][i]) and not math.isnan(a["invariant"][i]),
+                                    int(a["family"][i]), float(a["invariant"][i]))
+                           for i in near] or [Crossing(False)])
+        members = [self._region_cell(rid) for rid in region_ids]
+        xs, states = knots(coords, groups, members)
+        xs = [0.0, *xs, length]
+        states = [members[0].state, *states, members[-1].state]
+        return _history(xs, states, length)
+
+    def _profile_near(self, x: float, t: float) -> History | None:
+        return self.profile(t)
+
+    # --- derived quantities ---------------------------------------------------------------
+    def eulerian_position(self, at, t: float) -> float:
+        """Eulerian position (m) at time ``t`` (s) of the material point at station ``at``.
+
+        ``x(X, t) = x(X, 0) + int_0^t u dt``, with ``x(X, 0) = int_0^X v/v0 dX`` so that a
+        pre-stressed layer starts compressed.
         """
         x = self.station(at)
         hist = self.history(at)
-        return self.initial_eulerian(x) + hist.integral(hist.u, t)
+        return self.initial_eulerian(x) + hist.integral(hist.u, t, hist.u_end)
 
     def initial_eulerian(self, x: float) -> float:
         """Eulerian position (m) at ``t = 0`` of the Lagrangian point ``x`` (m)."""
         total = 0.0
-        for x0, x1, region in self.profile(0.0):
+        for x0, x1, rid in self._cell_ids_at(0.0):
             if x0 >= x:
                 break
-            total += (min(x1, x) - x0) * region.state.v / region.material.v0
+            found = self._cells()[rid]
+            material = found.material if not isinstance(found, tuple) else found[0].material
+            total += (min(x1, x) - x0) * self._region_state(rid).v / material.v0
         return total
 
     def max_tension(self) -> dict | None:
-        """Largest tension reached in any region: ``{"sigma", "x", "t"}`` (Pa, m, s).
+        """Largest tension reached in any cell: ``{"sigma", "x", "t"}`` (Pa, m, s).
 
-        ``None`` when no region is in tension beyond the negligible stress (a
+        ``None`` when no cell is in tension beyond the negligible stress (a
         rounding-level tension of a few ulps is not a tension).
         """
         negligible = self.accuracy_report.get("negligible_stress", 0.0)
@@ -284,9 +564,10 @@ class Solution:
     def conservation(self, t: float | None = None) -> dict:
         """Momentum and energy balance at time ``t`` (default ``t_end``), per unit area.
 
-        Returns the totals at 0 and ``t``, the boundary impulse and work, and the
-        residuals ``momentum_error`` and ``energy_error`` (absolute) with their
-        relative sizes against the largest momentum/energy scale.
+        Computed on the cells the engine advanced (see the module docstring).  Returns
+        the totals at 0 and ``t``, the boundary impulse and work, and the residuals
+        ``momentum_error`` and ``energy_error`` (absolute) with their relative sizes
+        against the largest momentum/energy scale.
         """
         t = self.scene.t_end if t is None else t
 
@@ -300,8 +581,10 @@ class Solution:
         p0, e0 = totals((layer.material.rho0 * layer.thickness, state)
                         for layer, state in zip(self.scene.layers, self.initial_states,
                                                 strict=True))
-        p1, e1 = totals((r.material.rho0 * (x1 - x0), r.state) for x0, x1, r in self.profile(t))
-        left, right = self.history("left"), self.history("right")
+        cells = [(self._material_of(rid).rho0 * (x1 - x0), self._region_state(rid))
+                 for x0, x1, rid in self._cell_ids_at(t)]
+        p1, e1 = totals(cells)
+        left, right = self.cell_history("left"), self.cell_history("right")
         impulse = left.integral(left.sigma, t) - right.integral(right.sigma, t)
         work = (left.integral(left.sigma * left.u, t)
                 - right.integral(right.sigma * right.u, t))
@@ -315,10 +598,14 @@ class Solution:
             "energy": (e0, e1), "work": work,
             "energy_error": e1 - e0 - work,
             "energy_relative_error": abs(e1 - e0 - work) / energy_scale,
-            "mass": sum(r.material.rho0 * (x1 - x0) for x0, x1, r in self.profile(t)),
+            "mass": sum(m for m, _ in cells),
         }
 
-    # --- export -------------------------------------------------------------
+    def _material_of(self, region_id: int):
+        found = self._cells()[region_id]
+        return found.material if not isinstance(found, tuple) else found[0].material
+
+    # --- export -------------------------------------------------------------------------
     def to_dict(self, probes: bool = True) -> dict:
         """A JSON-ready document of the solution (SI units)."""
         regions = []
@@ -334,22 +621,26 @@ class Solution:
                 "in_fan": r.in_fan, "polygon": [list(p) for p in r.polygon()],
             })
         fronts = [{
-            "id": f.id, "kind": f.kind, "x0": f.x0, "t0": f.t0, "x1": f.x1, "t1": f.t1,
+            "id": f.id, "kind": str(f.kind), "x0": f.x0, "t0": f.t0, "x1": f.x1, "t1": f.t1,
             "speed": f.speed, "direction": f.direction, "jump": f.jump, "wave": f.wave,
             "fan": f.fan, "ray_index": f.ray_index, "ray_count": f.ray_count,
+            "invariant": _finite_or_none(f.invariant),
             "bond": f.bond or None, "left_region": f.left_region,
-            "right_region": f.right_region_id, "kind_history": f.history,
-            "earlier_right_regions": f.earlier_regions,
+            "right_region": f.right_region_id,
+            "kind_history": [[t, str(k)] for t, k in f.history],
+            "earlier_right_regions": [list(p) for p in f.earlier_regions],
         } for f in self.fronts]
-        events = [{"t": e.t, "x": e.x, "kind": e.kind, "incoming": e.incoming,
-                   "outgoing": e.outgoing, "site": e.site} for e in self.events]
+        events = [{"t": e.t, "x": e.x, "kind": str(e.kind), "incoming": e.incoming,
+                   "outgoing": e.outgoing, "site": e.site, "nodes": e.nodes}
+                  for e in self.events]
         doc = {
             "title": self.scene.title,
             "t_end": self.scene.t_end,
             "regions": regions,
             "fronts": fronts,
             "events": events,
-            "spall": [{"X": s.x, "t": s.t, "tension": s.tension, "strength": s.strength}
+            "spall": [{"X": s.x, "t": s.t, "tension": s.tension, "strength": s.strength,
+                       "layer": s.layer, "zone": list(s.zone) if s.zone else None}
                       for s in self.spalls],
             "max_tension": self.max_tension(),
             "stats": self.stats,
@@ -358,11 +649,37 @@ class Solution:
         if probes:
             doc["probes"] = {
                 name: {"at": _probe_at(p), "t": h.t.tolist(), "sigma": h.sigma.tolist(),
-                       "u": h.u.tolist()}
+                       "u": h.u.tolist(), "sigma_end": h.sigma_end.tolist(),
+                       "u_end": h.u_end.tolist()}
                 for (name, h), p in zip(self.probe_histories().items(), self.scene.probes,
                                         strict=True)
             }
         return doc
+
+
+def _held(boundary, t: float, state: State) -> State:
+    """A state at an end of the stack with the quantity its boundary prescribes held
+    exactly (the reconstruction between two rays reaching a free surface gives its zero
+    stress only to rounding)."""
+    if boundary.kind in ("free", "stress"):
+        value = boundary.value_at(t)
+        return state if state.sigma == value else dataclasses.replace(state, sigma=value)
+    value = boundary.value_at(t)
+    return state if state.u == value else dataclasses.replace(state, u=value)
+
+
+def _state_in(record: History, x: float) -> State:
+    """The state of a record at coordinate ``x`` (interpolated inside its piece)."""
+    k = int(np.clip(np.searchsorted(record.t, x, side="right") - 1, 0, len(record.t) - 1))
+    a, b = record.states[k], record.ends[k]
+    if a == b:
+        return a
+    right = record.t[k + 1] if k + 1 < len(record.t) else record.stop
+    f = (x - record.t[k]) / (right - record.t[k]) if right > record.t[k] else 0.0
+    f = min(max(f, 0.0), 1.0)
+    return State(sigma=a.sigma + f * (b.sigma - a.sigma), u=a.u + f * (b.u - a.u),
+                 v=a.v + f * (b.v - a.v), e=a.e + f * (b.e - a.e),
+                 plastic_strain=a.plastic_strain)
 
 
 def _finite_or_none(value: float):

@@ -355,6 +355,15 @@ class AffineEnergyMaterial(Material):
         e = float((label - self._f(v)) / self._energy_factor(v))
         return float(self._a(v) + self._b(v) * e), e
 
+    def isentrope_arrays(self, through: State, v):
+        """``(sigma, e, C_L^2)`` on the isentrope through ``through`` at the volumes ``v``
+        (an array): ``e = (K - F(v)) / E(v)`` and ``sigma = A + B e``, vectorised."""
+        v = np.asarray(v, dtype=float)
+        label = self._isentrope_label(through)
+        e = (label - self._f(v)) / self._energy_factor(v)
+        sigma = self._a(v) + self._b(v) * e
+        return sigma, e, self.sound_speed_squared(v, e)
+
     def riemann_integral(self, through: State, v: float, start: float | None = None) -> float:
         label = self._isentrope_label(through)
         total = 0.0

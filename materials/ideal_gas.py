@@ -15,6 +15,8 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
+
 from .base import AffineEnergyMaterial, require_number, require_positive
 from .errors import MaterialError
 from .state import State
@@ -80,6 +82,13 @@ class IdealGas(AffineEnergyMaterial):
             return 0.0, 0.0
         e = through.e * (through.v / v) ** (self.gamma - 1.0)
         return (self.gamma - 1.0) * e / v, e
+
+    def isentrope_arrays(self, through: State, v):
+        """``(sigma, e, C_L^2)`` on the isentrope ``p v^gamma = const`` at the volumes ``v``."""
+        v = np.asarray(v, dtype=float)
+        e = through.e * (through.v / v) ** (self.gamma - 1.0)
+        sigma = (self.gamma - 1.0) * e / v
+        return sigma, e, (self.v0 / v) ** 2 * self.gamma * (self.gamma - 1.0) * e
 
     def riemann_integral(self, through: State, v: float, start: float | None = None) -> float:
         start = through.v if start is None else start

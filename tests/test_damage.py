@@ -15,7 +15,7 @@ import dataclasses
 import pytest
 
 from fronttrack.damage import failure_time, first_failure, stations
-from fronttrack.engine import run
+from fronttrack.runner import run
 from fronttrack.scene import Accuracy, Layer, Probe, Scene, SceneError, SpallCriterion
 from fronttrack.scene_file import scene_from_dict
 from materials import LinearElastic

@@ -20,7 +20,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 import materials
-from fronttrack.engine import Engine, run
+from fronttrack.engine import Engine
+from fronttrack.runner import run
 from fronttrack.scene import Accuracy, Layer, Probe, Scene
 from fronttrack.scene_file import scene_from_dict
 from materials import (
@@ -426,7 +427,7 @@ def _impact_scene(t_end, negligible=None):
 def _energy_totals(solution, t):
     """Momentum and kinetic/stored/dissipated energies of the stack at ``t`` (per area)."""
     p = kinetic = stored = dissipated = 0.0
-    for x0, x1, region in solution.profile(t):
+    for x0, x1, region in solution.cells_at(t):
         mass, s = RHO * (x1 - x0), region.state
         p += mass * s.u
         kinetic += mass * 0.5 * s.u**2

@@ -15,7 +15,7 @@ from engine_helpers import (
     assert_shock_jumps,
 )
 
-from fronttrack.engine import run
+from fronttrack.runner import run
 from fronttrack.scene import Accuracy, Boundary, Layer, Probe, Scene
 from materials import LinearElastic, MieGruneisen
 

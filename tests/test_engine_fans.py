@@ -16,7 +16,7 @@ from engine_helpers import assert_contacts_continuous, assert_no_nan, assert_sho
 from scipy.integrate import solve_ivp
 from scipy.optimize import brentq
 
-from fronttrack.engine import run
+from fronttrack.runner import run
 from fronttrack.scene import Accuracy, Boundary, Layer, Probe, Scene
 from materials import IdealGas, MieGruneisen
 

@@ -11,7 +11,8 @@ import numpy as np
 import pytest
 from engine_helpers import assert_contacts_continuous, assert_no_nan, assert_shock_jumps
 
-from fronttrack.engine import EventLimitError, run
+from fronttrack.engine import EventLimitError
+from fronttrack.runner import run
 from fronttrack.scene import Accuracy, Boundary, Layer, Probe, Scene, SceneError
 from materials import LinearElastic, MieGruneisen
 

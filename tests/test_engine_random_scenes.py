@@ -11,7 +11,8 @@ import random
 import pytest
 from engine_helpers import assert_contacts_continuous, assert_no_nan
 
-from fronttrack.engine import EventLimitError, run
+from fronttrack.engine import EventLimitError
+from fronttrack.runner import run
 from fronttrack.scene import Accuracy, Boundary, Layer, Scene
 from materials.errors import NoSolutionError
 from materials.library import available, get

@@ -16,7 +16,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from fronttrack.engine import run
+from fronttrack.runner import run
 from fronttrack.plotting.attenuation import peak_stress
 from fronttrack.pullback import spall_estimates
 from fronttrack.scene import Accuracy

@@ -527,7 +527,7 @@ def _impact(velocity, t_end, rays, negligible=None):
 
 def _totals(solution, t):
     p = energy = 0.0
-    for x0, x1, region in solution.profile(t):
+    for x0, x1, region in solution.cells_at(t):
         mass, s = RHO * (x1 - x0), region.state
         p += mass * s.u
         energy += mass * (0.5 * s.u**2 + s.e)
@@ -536,7 +536,7 @@ def _totals(solution, t):
 
 def test_engine_elastic_impact_with_release_fans():
     """Below the HEL: elastic shocks, elastic release fans from the free surfaces."""
-    from fronttrack.engine import run
+    from fronttrack.runner import run
 
     v = 50.0
     sol = run(_impact(v, 1.2e-6, 8))
@@ -551,7 +551,7 @@ def test_engine_elastic_impact_with_release_fans():
 
 
 def test_engine_plastic_impact_precursor_arrival():
-    from fronttrack.engine import run
+    from fronttrack.runner import run
 
     sol = run(_impact(300.0, 0.7e-6, 4, negligible=10e6))
     precursor = AL.wave_curve(AL.reference_state(), RIGHT).waves(AL.hel)[0]

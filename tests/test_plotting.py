@@ -17,7 +17,7 @@ import pytest
 from matplotlib.figure import Figure
 from shapely.geometry import Point, Polygon
 
-from fronttrack.engine import run
+from fronttrack.runner import run
 from fronttrack.plotting import (
     placed_labels,
     plot_free_surface_velocity,

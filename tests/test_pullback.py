@@ -14,7 +14,7 @@ import math
 import numpy as np
 import pytest
 
-from fronttrack.engine import run
+from fronttrack.runner import run
 from fronttrack.pullback import (
     NoPullbackError,
     acoustic_spall_strength,
@@ -139,7 +139,7 @@ def _triangular_pulse(strength, step):
     bar = LinearElastic("elastic", RHO, C, spall_strength=strength)
     return Scene(layers=(Layer(bar, 10e-3, name="bar"),), t_end=2.6e-6,
                  left=Boundary("stress", ((0.0, 4e9), (1e-6, 0.0))),
-                 accuracy=Accuracy(stress_tolerance=step))
+                 accuracy=Accuracy(characteristic_step=step))
 
 
 @pytest.mark.parametrize(("strength", "step"), [(1.1e9, 0.25e9), (1.15e9, 0.1e9),

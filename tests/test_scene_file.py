@@ -171,7 +171,7 @@ def test_defaults():
     assert (layer.velocity, layer.stress, layer.bond, layer.name) == (0.0, 0.0, "bonded", "")
     assert scene.left == scene.right == Boundary("free")
     assert scene.probes == ()
-    assert scene.accuracy.rays_per_fan == 16 and scene.accuracy.stress_tolerance is None
+    assert scene.accuracy.rays_per_fan is None and scene.accuracy.stress_tolerance is None
 
 
 def test_boundaries():

@@ -1,0 +1,40 @@
+"""What a run counted: events, lattices, and everything it neglected.
+
+The engine fills one ``Counters`` as it goes and hands it whole to the ``Solution``,
+whose ``stats`` and ``accuracy`` report read it.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+
+@dataclass
+class Counters:
+    """Tallies of one run.
+
+    ``events``: events popped from the queue and solved (a lattice is one);
+    ``lattices`` and ``nodes``: characteristic lattices solved in bulk and their nodes;
+    ``riemann_solves``: events that went through the general Riemann solver;
+    ``tables``: isentropes tabulated; ``dropped_waves`` and ``dropped_stress``: waves
+    weaker than the negligible stress and their total (Pa);
+    ``neglected_entropy``: the largest relative volume jump of an entropy contact not
+    tracked, ``neglected_contacts`` how many; ``unresolved_contacts``: contacts merged
+    because they were born closer than ``accuracy.contact_resolution`` to another;
+    ``suppressed_spalls`` and ``suppressed_tension`` (Pa): fractures not made because
+    they fell inside an earlier fracture zone or spacing, and the largest tension so
+    carried.
+    """
+
+    events: int = 0
+    lattices: int = 0
+    nodes: int = 0
+    riemann_solves: int = 0
+    tables: int = 0
+    dropped_waves: int = 0
+    dropped_stress: float = 0.0
+    neglected_entropy: float = 0.0
+    neglected_contacts: int = 0
+    unresolved_contacts: int = 0
+    suppressed_spalls: int = 0
+    suppressed_tension: float = 0.0

@@ -1,0 +1,236 @@
+"""Events solved as one Riemann problem: impacts, shocks, contacts, boundaries, spall.
+
+At an event the engine has the state left of the group of fronts meeting there and
+the state right of it; this module decides which Riemann problem that is and solves
+it with ``materials.solve_contact`` or ``materials.solve_boundary``:
+
+- at a boundary: the reflected wave from ``solve_boundary`` with the prescribed
+  stress or velocity (a timer event when the prescribed value steps);
+- at an interface or entropy contact: ``solve_contact`` with the contact's tensile
+  strength (0 if unbonded, the weaker spall strength if bonded); beyond it the
+  contact opens into a gap (two free surfaces);
+- at an open gap: each face reflects as a free surface; the gap closes (a new
+  impact) when the Eulerian positions of its two faces meet;
+- inside a material (collisions and overtakings involving a shock, rays of
+  different isentropes): ``solve_contact`` with the material's spall strength; a
+  tension beyond it fractures the material there, unless the point lies inside the
+  zone of an earlier fracture (``fronttrack.spall``).
+
+Prescribed boundary histories are followed by steps (``boundary_steps``); a ramp
+launches a simple wave, one characteristic per step.
+"""
+
+from __future__ import annotations
+
+import math
+
+from materials import NoSolutionError, RiemannSolution, solve_boundary, solve_contact
+
+from . import spall
+from .fronts import Front
+from .kinds import BoundaryKind, EventKind, FrontKind
+
+
+def contact_strength(engine, site: Front | None, material) -> float:
+    """Tension (Pa) the material or contact at an event can carry.
+
+    Under a cumulative-damage criterion the material itself never fails instantly.  An
+    unbonded contact carries tension up to the negligible stress: a rounding-level
+    tension (a free-surface state is zero only to a few ulps of the stresses that made
+    it) must not open a gap.
+    """
+    if site is None or site.kind == FrontKind.CONTACT:
+        strength = (material.spall_strength if engine.scene.spall_criterion is None
+                    else math.inf)
+    else:
+        strength = site.strength
+    return max(strength, engine.resolution.negligible)
+
+
+def solve(engine, site, region_left, region_right, t, x, incoming, timer):
+    """Riemann problem at the event; returns ``(kind, solution, new_site)``."""
+    release = engine.resolution.release
+    if site is not None and site.kind == FrontKind.BOUNDARY:
+        kind, sol = _boundary(engine, site, region_left, region_right, t, incoming, timer)
+        return kind, sol, None
+    if site is not None and site.kind == FrontKind.GAP:
+        if timer:  # the closure (any wave arriving at that instant joins the impact)
+            site.kind = FrontKind.INTERFACE
+            site.bond = "unbonded"
+            site.strength = 0.0
+            site.gap_version += 1
+            site.history.append((t, site.kind))
+            sol = solve_contact(region_left.material, region_left.state, region_right.material,
+                                region_right.state, contact_strength(engine, site, None),
+                                release)
+            return EventKind.GAP_CLOSE, sol, None
+        left = solve_boundary(region_left.material, region_left.state, "right", stress=0.0,
+                              release=release)
+        right = solve_boundary(region_right.material, region_right.state, "left", stress=0.0,
+                               release=release)
+        return EventKind.REFLECTION, combine(left, right), None
+    strength = contact_strength(engine, site, region_left.material)
+    sol = solve_contact(region_left.material, region_left.state, region_right.material,
+                        region_right.state, strength, release)
+    if site is None:
+        directions = {f.direction for f in incoming}
+        kind = EventKind.COLLISION if directions == {-1, 1} else EventKind.OVERTAKE
+    elif not incoming:
+        kind = EventKind.IMPACT
+    else:
+        kind = EventKind.TRANSMISSION
+    new_site = None
+    inside = site is None or site.kind == FrontKind.CONTACT
+    if sol.separated and inside and spall.suppressed(engine, x, region_left.layer):
+        # inside the zone of an earlier fracture: carried as tension, and reported,
+        # unless the tension would leave the equations of state (then it fractures)
+        try:
+            carried = solve_contact(region_left.material, region_left.state,
+                                    region_right.material, region_right.state, math.inf,
+                                    release)
+        except NoSolutionError:
+            carried = None
+        if carried is not None:
+            engine.counters.suppressed_spalls += 1
+            engine.counters.suppressed_tension = max(engine.counters.suppressed_tension,
+                                                     -sol.bonded_sigma)
+            sol = carried
+    if sol.separated:
+        if inside:
+            kind = EventKind.SPALL
+            spall.record(engine, x, t, -sol.bonded_sigma, strength, region_left.layer)
+        else:
+            kind = EventKind.GAP_OPEN
+        if site is None:
+            new_site = engine.new_front(FrontKind.GAP, x, t, bond="unbonded")
+            new_site.gap_time = t
+        else:
+            site.kind = FrontKind.GAP
+            site.gap_width, site.gap_time = 0.0, t
+            site.history.append((t, site.kind))
+    return kind, sol, new_site
+
+
+def _boundary(engine, site, region_left, region_right, t, incoming, timer):
+    spec = engine.scene.left if site.side == "left" else engine.scene.right
+    region = region_right if site.side == "left" else region_left
+    value = boundary_value(site, spec, t)
+    if timer:
+        _schedule_next_step(engine, site, t)
+    release = engine.resolution.release
+    if spec.kind in (BoundaryKind.FREE, BoundaryKind.STRESS):
+        sol = solve_boundary(region.material, region.state, site.side, stress=value,
+                             release=release)
+    else:
+        sol = solve_boundary(region.material, region.state, site.side, velocity=value,
+                             release=release)
+    return (EventKind.REFLECTION if incoming else EventKind.BOUNDARY), sol
+
+
+def combine(left_solution, right_solution) -> RiemannSolution:
+    """Two independent free-surface reflections on either side of an open gap."""
+    return RiemannSolution(left_waves=left_solution.left_waves,
+                           right_waves=right_solution.right_waves,
+                           left_star=left_solution.left_star,
+                           right_star=right_solution.right_star, separated=True,
+                           bonded_sigma=0.0)
+
+
+def fracture(engine, plan) -> None:
+    """Fracture the material at ``plan.x``, ``plan.t``: two free surfaces, an opening gap.
+
+    The region there is cut in two and the two halves become the faces of a new gap;
+    each face then reflects as a free surface.  A point on a front, or not in tension,
+    is left alone.
+    """
+    x, t = plan.x, plan.t
+    before = engine.head
+    while before.next is not None and before.next.position(t) <= x:
+        before = before.next
+    after, region = before.next, before.region_right
+    x_tol = engine.resolution.x_tol
+    if (after is None or region is None or region.state.sigma >= 0.0
+            or x - before.position(t) <= x_tol or after.position(t) - x <= x_tol):
+        return
+    x_left, x_right = before.position(t), after.position(t)
+    region.left_points.append((x_left, t))
+    region.right_points.append((x_right, t))
+    region.t_end = t
+    left = engine.new_region(region.state, region.material, region.layer, t, (x_left, t),
+                             (x, t), table=region.table, in_fan=region.in_fan)
+    right = engine.new_region(region.state, region.material, region.layer, t, (x, t),
+                              (x_right, t), table=region.table, in_fan=region.in_fan)
+    left.invariants = right.invariants = region.invariants
+    gap = engine.new_front(FrontKind.GAP, x, t, bond="unbonded")
+    gap.gap_time, gap.region_right = t, right
+    before.earlier_regions.append((t, region.id))
+    before.region_right = left
+    before.next, gap.prev, gap.next, after.prev = gap, before, after, gap
+    tension = plan.tension if plan.tension is not None else -region.state.sigma
+    spall.record(engine, x, t, tension, plan.strength, region.layer, plan.zone)
+    material, state = region.material, region.state
+    release = engine.resolution.release
+    sol = combine(solve_boundary(material, state, "right", stress=0.0, release=release),
+                  solve_boundary(material, state, "left", stress=0.0, release=release))
+    engine.replace([gap], gap, None, sol, left, right, t, x, [], EventKind.SPALL)
+
+
+def boundary_value(site: Front, spec, t: float) -> float:
+    """Prescribed stress (Pa) or velocity (m/s) of a boundary at time ``t`` (s)."""
+    if spec.kind in (BoundaryKind.FREE, BoundaryKind.WALL):
+        return 0.0
+    value = spec.value_at(0.0)
+    for step_time, step_value in site.boundary_steps:
+        if step_time <= t * (1.0 + 1e-15):
+            value = step_value
+    return value
+
+
+def next_step_time(site: Front, t: float) -> float:
+    """The boundary's first prescribed step after ``t`` (s), inf if none."""
+    later = (step_time for step_time, _ in site.boundary_steps
+             if step_time > t * (1.0 + 1e-15))
+    return next(later, math.inf)
+
+
+def _schedule_next_step(engine, site: Front, t: float) -> None:
+    """Queue the boundary's first prescribed step after ``t`` (its timer event)."""
+    step_time = next_step_time(site, t)
+    if math.isfinite(step_time):
+        engine.push_site(site, step_time)
+
+
+def boundary_steps(engine, spec, boundary: Front) -> list[tuple[float, float]]:
+    """Times (s) and values at which a prescribed history changes the boundary value.
+
+    A ramp is followed in steps that each carry at most one characteristic step of
+    stress: the value changes at the knots ``t_k`` of the ramp to its value at the
+    middle of the next interval (the staggered cells of ``characteristics.simple_waves``)
+    and reaches the end value at the ramp's end.
+    """
+    if spec.kind not in (BoundaryKind.VELOCITY, BoundaryKind.STRESS) or len(spec.history) < 2:
+        return []
+    side = boundary.side
+    layer = engine.scene.layers[0] if side == "left" else engine.scene.layers[-1]
+    impedance = layer.material.rho0 * layer.material.sound_speed(layer.material.v0, 0.0)
+    step = engine.resolution.step
+    steps = []
+    for (t0, y0), (t1, y1) in zip(spec.history[:-1], spec.history[1:], strict=True):
+        if t1 == t0:  # a step
+            steps.append((t1, y1))
+            continue
+        jump = abs(y1 - y0) * (impedance if spec.kind == BoundaryKind.VELOCITY else 1.0)
+        count = max(1, math.ceil(jump / step - 1e-9)) if jump > 0 else 0
+        for k in range(count):
+            ta = t0 + (t1 - t0) * k / count
+            tb = t0 + (t1 - t0) * (k + 1) / count
+            steps.append((ta if k else max(ta, 0.0), spec.value_at(0.5 * (ta + tb))))
+        if count:
+            steps.append((t1, y1))
+    # the value before the first step is value_at(0); drop steps with no change
+    result, last = [], spec.value_at(0.0)
+    for t, value in steps:
+        if value != last and t <= engine.t_end:
+            result.append((t, value))
+            last = value
+    return result

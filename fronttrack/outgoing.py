@@ -1,0 +1,82 @@
+"""The waves a Riemann problem sends out, as fronts of the queue.
+
+A shock is one front.  A simple wave (fan) is a family of characteristics
+(``characteristics.simple_waves``): one ray per characteristic, each with its own
+Riemann invariant, the cells between them on the fan's isentrope.  A family weaker
+than the negligible stress is dropped and counted.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from characteristics.simple_waves import discretise_fan
+from materials import Fan, State
+
+from .fronts import UNKNOWN, Front
+from .kinds import FrontKind
+
+
+@dataclass(frozen=True, slots=True)
+class WaveSpec:
+    """A new front with the states ahead of and behind it, and the isentrope table of
+    the cell behind it when the wave is a simple wave (``UNKNOWN`` otherwise)."""
+
+    front: Front
+    ahead: State
+    behind: State
+    table: object
+
+
+def wave_fronts(engine, waves, material, t: float, x: float, incoming,
+                direction: int) -> list[WaveSpec] | None:
+    """Fronts for the waves of one direction leaving an event at ``(x, t)``, leading first.
+
+    ``None`` when the whole family is weaker than the negligible stress (it is dropped).
+    A single-ray wave leaving a ray's event keeps that ray's fan, so the rays of a fan
+    stay one fan through the events that continue them.
+    """
+    if not waves:
+        return []
+    jump = waves[-1].behind.sigma - waves[0].ahead.sigma
+    if abs(jump) <= engine.resolution.negligible:
+        engine.counters.dropped_stress += abs(jump)
+        engine.counters.dropped_waves += 1
+        return None
+    parent = next((f for f in incoming if f.direction == direction), None)
+    specs = []
+    for wave in waves:
+        if isinstance(wave, Fan):
+            specs += _fan_fronts(engine, wave, material, t, x, parent, direction)
+        else:
+            wave_id = (parent.wave if parent is not None and parent.kind == FrontKind.SHOCK
+                       else engine.next_wave_id())
+            front = engine.new_front(FrontKind.SHOCK, x, t, speed=wave.speed, wave=wave_id,
+                                     direction=direction,
+                                     jump=wave.behind.sigma - wave.ahead.sigma)
+            specs.append(WaveSpec(front, wave.ahead, wave.behind, UNKNOWN))
+    return specs
+
+
+def _fan_fronts(engine, fan: Fan, material, t, x, parent, direction) -> list[WaveSpec]:
+    table = (engine.tables.table(material, fan.ahead)
+             if engine.resolution.release == "isentrope" else None)
+    if table is not None and not table.matches(fan.behind):
+        table = None
+    characteristics = discretise_fan(fan, material, engine.resolution.step, table)
+    if len(characteristics) == 1 and parent is not None and parent.kind == FrontKind.RAY:
+        fan_id, index, count = parent.fan, parent.ray_index, parent.ray_count
+    else:
+        fan_id, index, count = engine.next_wave_id(), None, len(characteristics)
+    which = 0 if direction > 0 else 1
+    specs = []
+    for ch in characteristics:
+        invariant = table.invariants(ch.state)[which] if table is not None else math.nan
+        front = engine.new_front(FrontKind.RAY, x, t, speed=ch.speed, fan=fan_id,
+                                 ray_index=ch.index if index is None else index,
+                                 ray_count=count, direction=direction,
+                                 jump=ch.behind.sigma - ch.ahead.sigma, invariant=invariant)
+        specs.append(WaveSpec(front, ch.ahead, ch.behind,
+                              table if table is not None else UNKNOWN))
+    return specs

@@ -1,0 +1,210 @@
+"""The resolution a scene asks for, derived once from its ``[accuracy]`` and its materials.
+
+A scene states the accuracy it needs: tolerances on its stress and velocity records
+(``accuracy.stress_tolerance``, ``accuracy.velocity_tolerance``).  Simple waves are
+families of characteristics a stress step apart, and the records read them
+continuously (second order in the step), so a record's error is about
+
+    error ~ RECORD_ERROR_CONSTANT * step^2 / stress_scale
+
+(measured on plate-impact scenes, see ``benchmarks/``); the step follows from the
+tolerance.  No step may exceed ``STRENGTH_FRACTION`` of the smallest spall strength
+or yield stress in the scene, so that a threshold is never crossed by one step.
+``rays_per_fan`` (characteristics per fan spanning the stress scale) and
+``characteristic_step`` (Pa) override both rules.
+
+Waves weaker than the negligible stress are dropped (and counted).  The default is
+``NEGLIGIBLE_FRACTION`` of the stress scale, raised to ``NEGLIGIBLE_STEP_FRACTION`` of
+the step where fans can form (their echoes a thousand times below the resolution
+change nothing) and to ``NEGLIGIBLE_SPLIT_FRACTION`` of the scale where elastic–plastic
+solids split every wave in two.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from materials import RIGHT, State, solve_boundary, solve_contact
+
+from .kinds import BoundaryKind, Release
+from .scene import Scene
+
+DEFAULT_RECORD_FRACTION = 1e-3
+"""Default tolerance on stress records, as a fraction of the scene's stress scale."""
+
+RECORD_ERROR_CONSTANT = 0.05
+"""``error ~ RECORD_ERROR_CONSTANT * step^2 / stress_scale`` for the records of a
+lattice-and-fan scene (the L1-in-time error of a stress history per unit time,
+fitted on the plate-impact benchmarks)."""
+
+STRENGTH_FRACTION = 0.25
+"""No characteristic step exceeds this fraction of the weakest spall strength or yield
+stress in the scene."""
+
+MAX_CHARACTERISTICS = 256
+"""Characteristics for a fan spanning the stress scale are capped here: a threshold
+far below the scene's stresses does not buy an unbounded lattice (the cap is
+reported)."""
+
+MIN_CHARACTERISTICS = 4
+"""At least this many cells for a fan spanning the stress scale."""
+
+NEGLIGIBLE_FRACTION = 1e-6
+"""Default negligible wave, as a fraction of the scene's stress scale."""
+
+NEGLIGIBLE_STEP_FRACTION = 1e-3
+"""In a scene with fans the negligible wave is at least this fraction of the step."""
+
+NEGLIGIBLE_SPLIT_FRACTION = 1e-3
+"""In a scene with elastic–plastic solids the negligible wave is at least this fraction
+of the stress scale: there every interaction splits waves into an elastic and a
+plastic part and their number grows geometrically."""
+
+
+@dataclass(frozen=True)
+class Resolution:
+    """What the engine resolves and what it neglects, for one scene (SI units).
+
+    ``stress_scale``: the largest stress the initial Riemann problems make (Pa);
+    ``step``: the largest stress step between two characteristics of a family (Pa);
+    ``step_rule``: which rule set it; ``stress_tolerance``/``velocity_tolerance``: the
+    record tolerances asked for (Pa, m/s); ``negligible``: waves weaker than this are
+    dropped (Pa); ``length``: the stack's length (m) and ``x_tol`` the distance below
+    which two fronts meet at one point; ``release``: the unloading path.
+    """
+
+    stress_scale: float
+    step: float
+    step_rule: str
+    stress_tolerance: float
+    velocity_tolerance: float
+    negligible: float
+    length: float
+    x_tol: float
+    release: Release
+    makes_fans: bool
+
+    def report(self) -> dict:
+        """The resolution as the ``accuracy`` section of a solution reports it."""
+        return {
+            "release": str(self.release),
+            "stress_scale": self.stress_scale,
+            "characteristic_step": self.step,
+            "characteristic_step_rule": self.step_rule,
+            "ray_stress_step": self.step,
+            "stress_tolerance": self.stress_tolerance,
+            "velocity_tolerance": self.velocity_tolerance,
+            "estimated_record_error": (RECORD_ERROR_CONSTANT * self.step**2 / self.stress_scale
+                                       if self.makes_fans else 0.0),
+            "negligible_stress": self.negligible,
+        }
+
+
+def initial_state(layer) -> State:
+    """A layer's initial state: its stress reached along its wave curve, moving at ``velocity``."""
+    if layer.initial is not None:
+        return layer.initial
+    material = layer.material
+    reference = material.reference_state()
+    if layer.stress != 0.0:
+        reference = material.wave_curve(reference, RIGHT).state_at(layer.stress)
+    return reference.moving(layer.velocity)
+
+
+def resolve(scene: Scene, states: list[State]) -> Resolution:
+    """The resolution of ``scene`` whose layers start in ``states``."""
+    acc = scene.accuracy
+    release = Release(acc.release)
+    scale = stress_scale(scene, states)
+    makes_fans = release == Release.ISENTROPE and any(
+        layer.material.makes_fans for layer in scene.layers)
+    impedance = max(layer.material.rho0 * layer.material.sound_speed(s.v, s.e)
+                    for layer, s in zip(scene.layers, states, strict=True))
+    stress_tol = (acc.stress_tolerance if acc.stress_tolerance is not None
+                  else DEFAULT_RECORD_FRACTION * scale)
+    velocity_tol = (acc.velocity_tolerance if acc.velocity_tolerance is not None
+                    else stress_tol / impedance)
+    stress_tol = min(stress_tol, velocity_tol * impedance)
+    step, rule = _step(scene, scale, stress_tol)
+    negligible = _negligible(scene, scale, step, makes_fans)
+    length = scene.length
+    return Resolution(stress_scale=scale, step=step, step_rule=rule,
+                      stress_tolerance=stress_tol, velocity_tolerance=velocity_tol,
+                      negligible=negligible, length=length, x_tol=1e-10 * length,
+                      release=release, makes_fans=makes_fans)
+
+
+def _step(scene: Scene, scale: float, stress_tol: float) -> tuple[float, str]:
+    """The characteristic step (Pa) and the rule that set it."""
+    acc = scene.accuracy
+    if acc.characteristic_step is not None:
+        return acc.characteristic_step, "accuracy.characteristic_step"
+    if acc.rays_per_fan is not None:
+        return scale / acc.rays_per_fan, "accuracy.rays_per_fan"
+    step = scale * math.sqrt(stress_tol / (RECORD_ERROR_CONSTANT * scale))
+    rule = "record tolerance"
+    weakest = weakest_threshold(scene)
+    if weakest is not None and STRENGTH_FRACTION * weakest[0] < step:
+        step, rule = STRENGTH_FRACTION * weakest[0], f"a quarter of the {weakest[1]}"
+    if step > scale / MIN_CHARACTERISTICS:
+        step = scale / MIN_CHARACTERISTICS
+        rule = f"at least {MIN_CHARACTERISTICS} characteristics per fan"
+    if step < scale / MAX_CHARACTERISTICS:
+        step = scale / MAX_CHARACTERISTICS
+        rule = f"capped at {MAX_CHARACTERISTICS} characteristics per fan"
+    return step, rule
+
+
+def weakest_threshold(scene: Scene) -> tuple[float, str] | None:
+    """The smallest spall strength or yield stress (Pa) a wave of the scene can meet, and
+    what it is; ``None`` if the materials have neither."""
+    found = []
+    for layer in scene.layers:
+        material = layer.material
+        if scene.spall_criterion is None and math.isfinite(material.spall_strength) \
+                and material.spall_strength > 0.0:
+            found.append((material.spall_strength, f"spall strength of {material.name}"))
+        strength = getattr(material, "yield_strength", math.inf)
+        if math.isfinite(strength) and strength > 0.0:
+            found.append((strength, f"yield stress of {material.name}"))
+    if scene.spall_criterion is not None and scene.spall_criterion.threshold > 0.0:
+        found.append((scene.spall_criterion.threshold, "spall threshold"))
+    return min(found) if found else None
+
+
+def _negligible(scene: Scene, scale: float, step: float, makes_fans: bool) -> float:
+    acc = scene.accuracy
+    if acc.negligible_stress is not None:
+        return acc.negligible_stress
+    negligible = NEGLIGIBLE_FRACTION * scale
+    if makes_fans:
+        negligible = max(negligible, NEGLIGIBLE_STEP_FRACTION * step)
+    if any(layer.material.splits_waves for layer in scene.layers):
+        negligible = max(negligible, NEGLIGIBLE_SPLIT_FRACTION * scale)
+    return negligible
+
+
+def stress_scale(scene: Scene, states: list[State]) -> float:
+    """Largest stress the initial Riemann problems produce (Pa): scales steps and thresholds."""
+    release = scene.accuracy.release
+    scale = max(abs(s.sigma) for s in states)
+    layers = scene.layers
+    for i in range(len(states) - 1):
+        a, b = states[i], states[i + 1]
+        if a.u != b.u or a.sigma != b.sigma:
+            sol = solve_contact(layers[i].material, a, layers[i + 1].material, b, 0.0, release)
+            scale = max(scale, abs(sol.bonded_sigma))
+    ends = ((scene.left, states[0], layers[0].material, "left"),
+            (scene.right, states[-1], layers[-1].material, "right"))
+    for spec, state, material, side in ends:
+        for _, value in spec.history:
+            if spec.kind == BoundaryKind.STRESS:
+                scale = max(scale, abs(value))
+            elif spec.kind == BoundaryKind.VELOCITY:
+                sol = solve_boundary(material, state, side, velocity=value, release=release)
+                scale = max(scale, abs(sol.bonded_sigma))
+    if scale == 0.0:
+        scale = max(layer.material.rho0 * layer.material.sound_speed(s.v, s.e)
+                    for layer, s in zip(layers, states, strict=True))
+    return scale

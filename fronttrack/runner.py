@@ -1,0 +1,32 @@
+"""Running a scene: the engine, with the cumulative-damage loop and the error estimate.
+
+``run(scene)`` is what users call.  A scene with a cumulative-damage criterion is run
+again with each failure found inserted as a fracture (``fronttrack.damage``); with
+``accuracy.estimate_error`` and simple waves present, it is run again at half the
+characteristic step and the difference reported (``fronttrack.error_estimate``).
+"""
+
+from __future__ import annotations
+
+from .damage import run_with_damage
+from .engine import Engine
+from .error_estimate import estimate_error
+from .scene import Scene
+from .solution import Solution
+
+
+def run(scene: Scene, progress=None) -> Solution:
+    """Evolve ``scene`` to ``scene.t_end`` and return its ``Solution``.
+
+    ``progress``, if given, is called as ``progress(events, t)`` every thousand events.
+    """
+    if scene.spall_criterion is not None:
+        solution = run_with_damage(scene, progress)
+    else:
+        solution = Engine(scene, progress).run()
+    if scene.accuracy.estimate_error:
+        estimate = (estimate_error(solution) if solution.stats["rays"] > 0
+                    else {"method": "exact: no simple waves in this solution", "sigma": 0.0,
+                          "u": 0.0})
+        solution.accuracy_report["error_estimate"] = estimate
+    return solution

@@ -1,0 +1,341 @@
+"""Zones of one isentrope, handed to the method of characteristics.
+
+When rays meet each other, or a reflecting boundary, inside cells that all lie on one
+isentrope, the engine does not solve one Riemann problem per crossing: it gathers the
+maximal run of such rays around the event (the *zone*), solves the zone in bulk as a
+characteristic lattice (``characteristics.lattice``) up to the first time anything
+it does not model would happen, and splices the result back:
+
+- input rays that met something end at their first node; rays and cells alive at
+  the cut become fronts and regions of the queue again;
+- segments and cells that began and ended inside the lattice are stored as one
+  ``LatticePatch`` (arrays), not as objects;
+- a lattice stopped by tension reaching the strength schedules the fracture at the
+  first point of the continuous field where it does (``fronttrack.spall``).
+
+The zone's ends: a free surface, a wall or a prescribed boundary reflects (its next
+step bounds the zone in time); any other front (a shock, a contact, an interface, a
+gap, a ray of another isentrope) bounds it, and the zone stops when one of its rays
+would reach it or when that front's own next event comes.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from characteristics import lattice as moc
+from materials import State
+
+from . import interactions, spall
+from .fronts import Front, Region
+from .kinds import BoundaryKind, EventKind, FrontKind
+from .patch import LatticePatch
+from .solution import EventRecord
+
+
+@dataclass
+class _Run:
+    """The rays of a zone (left to right), the cells around them and the fronts at its ends."""
+
+    rays: list[Front]
+    cells: list[Region]
+    left_end: Front
+    right_end: Front
+    table: object
+
+
+def try_zone(engine, group: list[Front], t: float) -> bool:
+    """Solve the event of ``group`` at ``t`` as part of a lattice; False if it is not one."""
+    table = _eligible(engine, group)
+    if table is None:
+        return False
+    run = _collect(engine, group, table)
+    zone = _zone(engine, run, t)
+    if not table.resolves(max(np.ptp(zone.jp), np.ptp(zone.jm))):
+        return False  # waves too weak for the table's rounding: the Riemann solver's
+    lattice = moc.solve(zone)
+    if lattice.nodes == 0:
+        if lattice.fracture is None:
+            return False
+        spall.schedule(engine, lattice, run.cells[0].layer, t)
+        _requeue(engine, run, t)
+        return True
+    _splice(engine, run, lattice, t)
+    if lattice.fracture is not None:
+        spall.schedule(engine, lattice, run.cells[0].layer, t)
+    return True
+
+
+def _eligible(engine, group: list[Front]):
+    """The common isentrope of an event that is a crossing of rays, or rays reaching a
+    reflecting boundary; ``None`` otherwise."""
+    rays = [f for f in group if f.kind == FrontKind.RAY]
+    sites = [f for f in group if f.is_site]
+    if not rays or len(rays) + len(sites) != len(group) or len(sites) > 1:
+        return None
+    if any(math.isnan(f.invariant) for f in rays):
+        return None
+    if sites and not _reflects(engine, sites[0], group):
+        return None
+    cells = [f.region_right for f in group[:-1]]
+    if group[0].prev is not None:
+        cells.append(group[0].prev.region_right)
+    if group[-1].region_right is not None:
+        cells.append(group[-1].region_right)
+    table = engine.table_of(cells[0])
+    if table is None or any(engine.table_of(c) is not table for c in cells[1:]):
+        return None
+    return table
+
+
+def _reflects(engine, site: Front, group: list[Front]) -> bool:
+    """A boundary of the stack at the end of the group (rays arriving at it)."""
+    if site.kind != FrontKind.BOUNDARY:
+        return False
+    return (site is group[-1]) if site.side == "right" else (site is group[0])
+
+
+def _collect(engine, group: list[Front], table) -> _Run:
+    """The maximal run of rays on ``table`` around the group."""
+    rays = [f for f in group if f.kind == FrontKind.RAY]
+    first, last = rays[0], rays[-1]
+    left = first.prev
+    while (left is not None and left.kind == FrontKind.RAY and not math.isnan(left.invariant)
+           and left.prev is not None and engine.table_of(left.prev.region_right) is table):
+        rays.insert(0, left)
+        left = left.prev
+    right = last.next
+    while (right is not None and right.kind == FrontKind.RAY
+           and not math.isnan(right.invariant) and right.region_right is not None
+           and engine.table_of(right.region_right) is table):
+        rays.append(right)
+        right = right.next
+    cells = [rays[0].prev.region_right] + [r.region_right for r in rays]
+    return _Run(rays=rays, cells=cells, left_end=rays[0].prev, right_end=rays[-1].next,
+                table=table)
+
+
+def _zone(engine, run: _Run, t: float) -> moc.Zone:
+    """The lattice input for a run at time ``t``."""
+    invariants = [engine.invariants_of(c) for c in run.cells]
+    layer = run.cells[0].layer
+    material = run.cells[0].material
+    strength = (material.spall_strength if engine.scene.spall_criterion is None
+                else math.inf)
+    left, left_horizon = _end(engine, run.left_end, "left", t)
+    right, right_horizon = _end(engine, run.right_end, "right", t)
+    horizon = min(engine.t_end, left_horizon, right_horizon, spall.next_scheduled(engine, t))
+    return moc.Zone(
+        table=run.table,
+        family=np.array([r.direction for r in run.rays], dtype=np.int8),
+        own=np.array([r.invariant for r in run.rays]),
+        x0=np.array([r.x0 for r in run.rays]), t0=np.array([r.t0 for r in run.rays]),
+        speed=np.array([r.speed for r in run.rays]),
+        jp=np.array([j[0] for j in invariants]), jm=np.array([j[1] for j in invariants]),
+        left=left, right=right, t_now=t, horizon=horizon, strength=strength,
+        carried=spall.carried_intervals(engine, layer))
+
+
+def _end(engine, front: Front, side: str, t: float):
+    """The zone's end at ``front``: a ``Reflector`` or a ``Bound``, and the time until which
+    the end stays as it is."""
+    if front.kind == FrontKind.BOUNDARY:
+        spec = engine.scene.left if front.side == "left" else engine.scene.right
+        value = interactions.boundary_value(front, spec, t)
+        holds = "stress" if spec.kind in (BoundaryKind.FREE, BoundaryKind.STRESS) else "velocity"
+        return moc.Reflector(front.x0, holds, value), interactions.next_step_time(front, t)
+    bound = moc.Bound(front.x0, front.t0, front.speed)
+    outer = front.prev if side == "left" else front.next
+    horizon = math.inf
+    if outer is not None:
+        a, b = (outer, front) if side == "left" else (front, outer)
+        closing = a.speed - b.speed
+        if closing > 0.0:
+            horizon = t + max(b.position(t) - a.position(t), 0.0) / closing
+    if front.kind == FrontKind.GAP:
+        left_u, right_u = front.prev.region_right.state.u, front.region_right.state.u
+        if left_u > right_u:
+            horizon = min(horizon, front.gap_time + front.gap_width / (left_u - right_u))
+    return bound, horizon
+
+
+def _requeue(engine, run: _Run, t: float) -> None:
+    """Put the run's pairs back in the queue (nothing of it was solved)."""
+    chain = [run.left_end, *run.rays, run.right_end]
+    for a, b in zip(chain[:-1], chain[1:], strict=True):
+        engine.push_pair(a, b, t)
+
+
+def _splice(engine, run: _Run, lat: moc.Lattice, t: float) -> None:
+    """Write the solved lattice back into the engine (see the module docstring)."""
+    k = len(run.rays)
+    n_seg, n_cell = len(lat.seg_x0), len(lat.cell_sigma)
+    live_seg, live_cell = lat.live_segments, lat.live_cells
+    is_live_cell = np.zeros(n_cell, bool)
+    is_live_cell[live_cell] = True
+    is_live_seg = np.zeros(n_seg, bool)
+    is_live_seg[live_seg] = True
+    material, layer = run.cells[0].material, run.cells[0].layer
+    # --- cells: ids, objects for inputs and live ones
+    cell_ids = np.empty(n_cell, dtype=int)
+    cell_ids[:k + 1] = [c.id for c in run.cells]
+    for j in range(k + 1, n_cell):
+        cell_ids[j] = engine.next_region_id()
+    order = np.lexsort((lat.node_t[lat.chain_node], lat.chain_side, lat.chain_cell))
+    chain_cell = lat.chain_cell[order]
+    chain_side = lat.chain_side[order]
+    chain_x, chain_t = lat.node_x[lat.chain_node[order]], lat.node_t[lat.chain_node[order]]
+    bounds = np.searchsorted(chain_cell, np.arange(n_cell + 1))
+    regions: dict[int, Region] = {j: run.cells[j] for j in range(k + 1)}
+    for j in range(k + 1):
+        _extend_chains(run.cells[j], chain_side, chain_x, chain_t, bounds[j], bounds[j + 1])
+        if not math.isnan(lat.cell_t1[j]):
+            run.cells[j].t_end = float(lat.cell_t1[j])
+    for j in np.nonzero(is_live_cell[k + 1:])[0] + k + 1:
+        j = int(j)
+        region = Region(id=int(cell_ids[j]), state=_state(lat, j), material=material,
+                        layer=layer, t_start=float(lat.cell_t0[j]), left_points=[],
+                        right_points=[], in_fan=True, table=run.table,
+                        invariants=(float(lat.cell_jp[j]), float(lat.cell_jm[j])))
+        _extend_chains(region, chain_side, chain_x, chain_t, bounds[j], bounds[j + 1])
+        engine.regions.append(region)
+        regions[j] = region
+    # --- segments: close the inputs that ended, make fronts of the new live ones
+    fans = _fan_ids(engine, run, lat)
+    for i, ray in enumerate(run.rays):
+        if not math.isnan(lat.seg_t1[i]):
+            ray.alive = False
+            ray.t1 = float(lat.seg_t1[i])
+            ray.x1 = ray.position(ray.t1)
+            ray.right_region_id = ray.region_right.id
+    live_fronts = []
+    for s in live_seg.tolist():
+        if s < k:
+            live_fronts.append(run.rays[s])
+            continue
+        source = run.rays[int(lat.seg_tag[s])]
+        left_cell, right_cell = int(lat.seg_left[s]), int(lat.seg_right[s])
+        front = engine.new_front(
+            FrontKind.RAY, float(lat.seg_x0[s]), float(lat.seg_t0[s]),
+            speed=float(lat.seg_speed[s]), direction=int(lat.seg_family[s]),
+            jump=_jump(lat, left_cell, right_cell, int(lat.seg_family[s])),
+            fan=int(fans[s]), ray_index=source.ray_index, ray_count=source.ray_count,
+            invariant=float(lat.seg_own[s]))
+        front.left_region = int(cell_ids[left_cell])
+        front.region_right = regions[right_cell]
+        live_fronts.append(front)
+    # --- the end that reflected changes its region on the right
+    previous = run.cells[0].id
+    for when, cell in lat.end_changes["left"]:
+        run.left_end.earlier_regions.append((when, previous))
+        previous = int(cell_ids[cell])
+    run.left_end.region_right = regions[int(live_cell[0])]
+    # --- relink and queue the new neighbours
+    chain = [run.left_end, *live_fronts, run.right_end]
+    for a, b in zip(chain[:-1], chain[1:], strict=True):
+        a.next, b.prev = b, a
+    for a, b in zip(chain[:-1], chain[1:], strict=True):
+        engine.push_pair(a, b, t)
+    # --- the interior as one patch
+    patch = _patch(engine, run, lat, cell_ids, is_live_cell, is_live_seg, fans, chain_x,
+                   chain_t, chain_side, bounds)
+    if patch is not None:
+        engine.patches.append(patch)
+    _note_tension(engine, lat, k)
+    engine.counters.lattices += 1
+    engine.counters.nodes += lat.nodes
+    engine.events.append(EventRecord(
+        t=t, x=float(lat.node_x[0]), kind=EventKind.LATTICE,
+        incoming=[r.id for i, r in enumerate(run.rays) if not math.isnan(lat.seg_t1[i])],
+        outgoing=[f.id for f in live_fronts if f not in run.rays], site=None,
+        nodes=lat.nodes))
+
+
+def _state(lat, j: int) -> State:
+    return State(sigma=float(lat.cell_sigma[j]), u=float(lat.cell_u[j]),
+                 v=float(lat.cell_v[j]), e=float(lat.cell_e[j]))
+
+
+def _jump(lat, left: int, right: int, family: int) -> float:
+    """Stress behind the ray minus ahead (behind is on the left of a right-going ray)."""
+    ahead, behind = (right, left) if family > 0 else (left, right)
+    return float(lat.cell_sigma[behind] - lat.cell_sigma[ahead])
+
+
+def _extend_chains(region: Region, side, xs, ts, start: int, end: int) -> None:
+    for i in range(start, end):
+        point = (float(xs[i]), float(ts[i]))
+        (region.right_points if side[i] else region.left_points).append(point)
+
+
+def _fan_ids(engine, run: _Run, lat) -> np.ndarray:
+    """A fan id per segment: its source ray's, or a new one per end for reflected rays."""
+    source_fan = np.array([r.fan if r.fan is not None else -1 for r in run.rays])
+    source_dir = np.array([r.direction for r in run.rays])
+    fans = source_fan[lat.seg_tag]
+    reflected = lat.seg_family != source_dir[lat.seg_tag]
+    if np.any(reflected):
+        new_ids = {}
+        for s in np.nonzero(reflected)[0]:
+            key = (int(lat.seg_tag[s]) >= 0, int(lat.seg_family[s]))
+            if key not in new_ids:
+                new_ids[key] = engine.next_wave_id()
+            fans[s] = new_ids[key]
+    return fans
+
+
+def _patch(engine, run, lat, cell_ids, is_live_cell, is_live_seg, fans, chain_x, chain_t,
+           chain_side, bounds) -> LatticePatch | None:
+    """The segments and cells that began and ended inside the lattice."""
+    k = len(run.rays)
+    segs = np.nonzero(~is_live_seg)[0]
+    segs = segs[segs >= k]
+    cells = np.nonzero(~is_live_cell)[0]
+    cells = cells[cells > k]
+    if not segs.size and not cells.size:
+        return None
+    seg_ids = np.array([engine.next_front_id() for _ in range(segs.size)], dtype=int)
+    behind = np.where(lat.seg_family[segs] > 0, lat.seg_left[segs], lat.seg_right[segs])
+    ahead = np.where(lat.seg_family[segs] > 0, lat.seg_right[segs], lat.seg_left[segs])
+    source = lat.seg_tag[segs]
+    # chains of the patch cells, left side then right side, contiguous per cell
+    starts, splits, xs, ts = [0], [], [], []
+    for j in cells.tolist():
+        a, b = bounds[j], bounds[j + 1]
+        side = chain_side[a:b]
+        left = np.nonzero(side == 0)[0] + a
+        right = np.nonzero(side == 1)[0] + a
+        xs += [chain_x[left], chain_x[right]]
+        ts += [chain_t[left], chain_t[right]]
+        splits.append(starts[-1] + left.size)
+        starts.append(starts[-1] + left.size + right.size)
+    return LatticePatch(
+        material=run.cells[0].material, layer=run.cells[0].layer, table=run.table,
+        seg_id=seg_ids, seg_x0=lat.seg_x0[segs], seg_t0=lat.seg_t0[segs],
+        seg_t1=lat.seg_t1[segs], seg_speed=lat.seg_speed[segs],
+        seg_direction=lat.seg_family[segs], seg_invariant=lat.seg_own[segs],
+        seg_fan=fans[segs],
+        seg_ray_index=np.array([run.rays[s].ray_index for s in source.tolist()], dtype=int),
+        seg_ray_count=np.array([run.rays[s].ray_count for s in source.tolist()], dtype=int),
+        seg_left=cell_ids[lat.seg_left[segs]], seg_right=cell_ids[lat.seg_right[segs]],
+        seg_jump=lat.cell_sigma[behind] - lat.cell_sigma[ahead],
+        cell_id=cell_ids[cells], cell_sigma=lat.cell_sigma[cells], cell_u=lat.cell_u[cells],
+        cell_v=lat.cell_v[cells], cell_e=lat.cell_e[cells], cell_t0=lat.cell_t0[cells],
+        cell_t1=lat.cell_t1[cells],
+        chain_x=np.concatenate(xs) if xs else np.empty(0),
+        chain_t=np.concatenate(ts) if ts else np.empty(0),
+        chain_start=np.array(starts), chain_split=np.array(splits))
+
+
+def _note_tension(engine, lat, k: int) -> None:
+    """The largest tension among the lattice's new cells, where it first appeared."""
+    if len(lat.cell_sigma) <= k + 1:
+        return
+    new = lat.cell_sigma[k + 1:]
+    j = int(np.argmin(new)) + k + 1
+    born = lat.chain_cell == j
+    x = float(np.mean(lat.node_x[lat.chain_node[born]])) if np.any(born) else 0.0
+    engine.note_stress(float(lat.cell_sigma[j]), x, float(lat.cell_t0[j]))
