@@ -181,8 +181,9 @@ class FrontRecord:
 @dataclass(frozen=True, slots=True)
 class RegionRecord:
     """A region of a solution: a constant ``state`` of ``material`` in ``layer`` over the
-    polygon ``vertices`` (``(X, t)``, m and s) from ``t_start`` to ``t_end``; ``in_fan``
-    marks a cell of a simple wave or a lattice."""
+    polygon ``vertices`` (``(X, t)``, m and s) from ``t_start`` to ``t_end``; ``birth``
+    is the first vertex of its left boundary (where it began); ``in_fan`` marks a cell
+    of a simple wave or a lattice."""
 
     id: int
     state: State
@@ -192,6 +193,7 @@ class RegionRecord:
     t_end: float | None
     in_fan: bool
     vertices: tuple
+    birth: tuple | None = None
 
     def polygon(self) -> list[tuple[float, float]]:
         """Closed boundary as ``(X, t)`` vertices (m, s), counter-clockwise."""
@@ -201,7 +203,8 @@ class RegionRecord:
     def of(cls, region: Region) -> RegionRecord:
         return cls(id=region.id, state=region.state, material=region.material,
                    layer=region.layer, t_start=region.t_start, t_end=region.t_end,
-                   in_fan=region.in_fan, vertices=tuple(region.polygon()))
+                   in_fan=region.in_fan, vertices=tuple(region.polygon()),
+                   birth=region.left_points[0] if region.left_points else None)
 
 
 def inside_fan(left: Front, right: Front) -> bool:

@@ -94,5 +94,11 @@ class LatticePatch:
                              t_start=float(self.cell_t0[i]),
                              t_end=None if math.isnan(self.cell_t1[i]) else float(
                                  self.cell_t1[i]),
-                             in_fan=True, vertices=tuple(self.polygon(i)))
+                             in_fan=True, vertices=tuple(self.polygon(i)),
+                             birth=self.birth(i))
                 for i in range(len(self.cell_id))]
+
+    def birth(self, index: int) -> tuple[float, float]:
+        """The first vertex of cell ``index``'s left boundary (where it began)."""
+        start = int(self.chain_start[index])
+        return float(self.chain_x[start]), float(self.chain_t[start])

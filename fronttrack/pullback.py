@@ -33,8 +33,8 @@ the material carried when it broke is inferred from it:
   It lies between the two acoustic estimates and reduces to them when
   ``C0 = CB``.  Kanel's further correction for the overtaking of the slow
   plastic release by the faster elastic spall signal needs the slopes of the
-  record; the records of this engine are step functions (every wave of the
-  ideal elastic–plastic solid is a jump), so it is not applied here.
+  record; in the ideal elastic–plastic solid every wave is a jump, so it is not
+  applied here.
 
 The estimates are reported beside what the exact solution knows: the largest
 tension any region carried (``Solution.max_tension``), the first fracture
@@ -74,7 +74,7 @@ class NoPullbackError(ValueError):
 
 @dataclass(frozen=True)
 class Pullback:
-    """The pullback of a step record (SI units, velocities outward positive).
+    """The pullback of a record (SI units, velocities outward positive).
 
     ``u_max`` holds from ``t_peak`` (s); the record then falls to its first
     minimum ``u_min``, reached at ``t_min``; ``t_rebound`` is when it rises
@@ -132,7 +132,9 @@ def wave_speeds(material: Material) -> tuple[float, float]:
 
 def find_pullback(t, u, tolerance: float | None = None,
                   require_rebound: bool = True) -> Pullback:
-    """The pullback of a step record: values ``u[k]`` (m/s) hold from ``t[k]`` (s).
+    """The pullback of a record: ``u[k]`` (m/s) from ``t[k]`` (s), constant or linear up to
+    the next point (a step record, or a continuous one given at its knots, whose
+    extremes are knots).
 
     The peak is the largest value reached before the record first falls by more
     than ``tolerance`` (m/s; default ``DEFAULT_TOLERANCE`` of the largest
@@ -194,7 +196,10 @@ def surface_record(solution, side: str = "right") -> tuple[np.ndarray, np.ndarra
                          f"not a free surface: a pullback needs a free-surface record")
     history = solution.history(side)
     sign = 1.0 if side == "right" else -1.0
-    return np.asarray(history.t, dtype=float), sign * history.u
+    t, u = history.t, history.u
+    if history.u_end[-1] != u[-1]:  # a record still falling (or rising) at its end
+        t, u = np.append(t, history.stop), np.append(u, history.u_end[-1])
+    return np.asarray(t, dtype=float), sign * u
 
 
 def pullback(solution, side: str = "right", tolerance: float | None = None,

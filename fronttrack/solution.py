@@ -338,7 +338,7 @@ class Solution:
             return RegionRecord(id=region_id, state=patch.state(i), material=patch.material,
                                 layer=patch.layer, t_start=float(patch.cell_t0[i]),
                                 t_end=float(patch.cell_t1[i]), in_fan=True,
-                                vertices=tuple(patch.polygon(i)))
+                                vertices=tuple(patch.polygon(i)), birth=patch.birth(i))
         return RegionRecord.of(found)
 
     def _spatial_order(self, index: np.ndarray, pos: np.ndarray, t: float) -> np.ndarray:

@@ -86,9 +86,9 @@ def region_motions(solution) -> dict[int, AffineMotion]:
 def _born_motion(region, owners, motions, site_x, centres) -> AffineMotion | None:
     """Motion of a region born after ``t = 0``, from an older region at its birth point."""
     stretch = region.state.v / region.material.v0
-    if not math.isfinite(stretch) or not region.left_points:
+    if not math.isfinite(stretch) or region.birth is None:
         return None
-    point = region.left_points[0]
+    point = region.birth
     side = centres[region.id] - point[0]
     candidates = [r for r in owners.get(point, []) if r.id in motions]
     if point[0] in site_x:

@@ -1,7 +1,8 @@
 """Records of the kind an experiment gives: profiles, gauge histories, VISAR, attenuation.
 
-The solution is piecewise constant, so profiles and histories are step
-functions with exact step positions and times; they are drawn as steps.
+Records are read continuously from the solution: straight between the rays of
+simple waves, jumps at shocks and contacts (``Solution.history``, ``Solution.profile``);
+they are drawn as such.
 
 - ``plot_profiles``: stress (or particle velocity) against Lagrangian X at
   chosen instants;
@@ -29,17 +30,13 @@ from .style import GPA, MM, SIGMA_LABEL, T_LABEL, U_LABEL, US, X_LABEL, title_of
 QUANTITIES = {"sigma": (SIGMA_LABEL, GPA), "u": (U_LABEL, 1.0)}
 
 
-def _value(state, quantity: str) -> float:
-    return state.sigma if quantity == "sigma" else state.u
-
-
 def _mark_interfaces(ax, solution) -> None:
     for x in solution.scene.interfaces():
         ax.axvline(x * MM, color="#777777", lw=0.8, ls=(0, (5, 3)), zorder=1)
 
 
 def plot_profiles(solution, times, ax=None, quantity="sigma"):
-    """Step profiles of ``quantity`` (``"sigma"`` in GPa or ``"u"`` in m/s) vs X (mm).
+    """Profiles of ``quantity`` (``"sigma"`` in GPa or ``"u"`` in m/s) vs X (mm).
 
     ``times`` are instants in seconds; each profile is labelled in µs.
     """
@@ -51,11 +48,8 @@ def plot_profiles(solution, times, ax=None, quantity="sigma"):
     times = list(times)
     colors = plt.get_cmap("viridis")(np.linspace(0.0, 0.9, max(len(times), 1)))
     for t, color in zip(times, colors, strict=True):
-        pieces = solution.profile(t)
-        edges = np.array([pieces[0][0]] + [p[1] for p in pieces]) * MM
-        values = np.array([_value(p[2].state, quantity) for p in pieces]) * factor
-        ax.stairs(values, edges, color=color, lw=1.4, baseline=None,
-                  label=f"t = {t * US:.3g} µs")
+        x, values = solution.profile(t).samples(quantity)
+        ax.plot(x * MM, values * factor, color=color, lw=1.4, label=f"t = {t * US:.3g} µs")
     _mark_interfaces(ax, solution)
     ax.axhline(0.0, color="#999999", lw=0.6, zorder=0)
     ax.set_xlim(0.0, solution.scene.length * MM)
@@ -66,11 +60,6 @@ def plot_profiles(solution, times, ax=None, quantity="sigma"):
     ax.legend(fontsize=7.5, loc="best")
     ax.grid(True, lw=0.3, alpha=0.5)
     return ax
-
-
-def _stairs(history, values, t_end):
-    """Edges (µs) and values of a history as a step function ending at ``t_end`` (s)."""
-    return np.append(history.t, t_end) * US, np.asarray(values)
 
 
 def plot_histories(solution, ax=None):
@@ -95,11 +84,11 @@ def plot_histories(solution, ax=None):
                                                      strict=True)):
         where = probe.at if isinstance(probe.at, str) else f"X = {probe.at * MM:.3g} mm"
         label = f"{name} ({where})"
-        edges, sigma = _stairs(history, history.sigma * GPA, t_end)
-        ax_s.stairs(sigma, edges, color=colors(k), lw=1.4, baseline=None, label=label)
-        edges, u = _stairs(history, history.u, t_end)
-        ax_u.stairs(u, edges, color=colors(k), lw=1.4 if not twin else 1.0,
-                    ls="-" if not twin else "--", baseline=None, label=label)
+        t, sigma = history.samples("sigma")
+        ax_s.plot(t * US, sigma * GPA, color=colors(k), lw=1.4, label=label)
+        t, u = history.samples("u")
+        ax_u.plot(t * US, u, color=colors(k), lw=1.4 if not twin else 1.0,
+                  ls="-" if not twin else "--", label=label)
     ax_s.set_ylabel(SIGMA_LABEL)
     ax_u.set_ylabel(U_LABEL)
     ax_u.set_xlabel(T_LABEL)
@@ -116,7 +105,7 @@ def plot_histories(solution, ax=None):
 
 
 def pullback(velocity) -> tuple[int | None, int | None, bool]:
-    """The first peak of a step record and the low point after it.
+    """The first peak of a record (its values at its knots) and the low point after it.
 
     Returns ``(i_peak, i_low, rebound)``: indices into ``velocity`` of the first
     peak (the value before the first fall) and of the lowest value before the
@@ -141,7 +130,7 @@ def pullback(velocity) -> tuple[int | None, int | None, bool]:
 def plot_free_surface_velocity(solution, side="right", ax=None):
     """The velocity history of the ``side`` surface (VISAR/PDV record, m/s vs µs).
 
-    Drawn as the exact step function, signed toward the outside of the stack
+    Drawn as the continuous record (jumps at shocks), signed toward the outside of the stack
     (``+u`` for the right surface, ``-u`` for the left), and annotated with the
     peak velocity and, if the record falls after its first peak, the pullback
     ``Δu_pb``, with the acoustic spall-strength estimate ``½ ρ0 C0 Δu_pb`` when
@@ -151,11 +140,10 @@ def plot_free_surface_velocity(solution, side="right", ax=None):
         raise ValueError(f"side must be 'left' or 'right', got {side!r}")
     if ax is None:
         _, ax = plt.subplots(figsize=(7.0, 4.4))
-    history = solution.history(side)
     sign = 1.0 if side == "right" else -1.0
-    velocity = sign * history.u
-    edges, values = _stairs(history, velocity, solution.scene.t_end)
-    ax.stairs(values, edges, color="#1f4e9c", lw=1.6, baseline=None)
+    edges, values = solution.history(side).samples("u")
+    edges, values = edges * US, sign * values
+    ax.plot(edges, values, color="#1f4e9c", lw=1.6)
     ax.set_xlim(0.0, solution.scene.t_end * US)
     top = float(values.max()) if values.size else 0.0
     i_top = int(np.argmax(values)) if values.size else 0
@@ -182,7 +170,7 @@ def _annotate_pullback(ax, solution, side, edges, values, peak, low, rebound) ->
     drop = float(values[peak] - values[low])
     c0 = material.sound_speed(material.v0, 0.0)
     strength = 0.5 * material.rho0 * c0 * drop
-    t_mid = 0.5 * (edges[low] + edges[low + 1])
+    t_mid = edges[low]
     ax.annotate("", xy=(t_mid, values[low]), xytext=(t_mid, values[peak]),
                 arrowprops={"arrowstyle": "<->", "color": "#8b0000", "lw": 1.0})
     ax.plot([edges[peak], t_mid], [values[peak]] * 2, color="#8b0000", lw=0.6, ls=":")
