@@ -86,6 +86,7 @@ class Isentrope(ABC):
 
     material: object
     through: State
+    _resolution: float | None = None
 
     @abstractmethod
     def phi_at_stress(self, sigma: float) -> float:
@@ -111,7 +112,9 @@ class Isentrope(ABC):
     def resolves(self, spread: float) -> bool:
         """Whether a wave spanning ``spread`` (m/s) in an invariant is read from the table
         to better than 1e-12 of its amplitude (``RESOLVED_FRACTION``)."""
-        return spread >= RESOLVED_FRACTION * self.speed_at_stress(self.through.sigma)
+        if self._resolution is None:
+            self._resolution = RESOLVED_FRACTION * self.speed_at_stress(self.through.sigma)
+        return spread >= self._resolution
 
     def invariants(self, state: State) -> tuple[float, float]:
         """``(J+, J-)`` (m/s) of a state on this isentrope."""
@@ -338,6 +341,18 @@ class TabulatedIsentrope(Isentrope):
         sigma, e, c2 = self.material.isentrope_arrays(self.through, v)
         return sigma, v, e, np.sqrt(np.maximum(c2, 0.0))
 
+    @staticmethod
+    def labels(material, state: State) -> tuple[float, float] | None:
+        """The isentrope label ``K`` of ``state`` and the width in ``K`` within which two
+        labels are one isentrope (``LABEL_TOLERANCE`` of the stress, at equal volume)."""
+        label = material._isentrope_label(state)
+        c2 = material.sound_speed_squared(state.v, state.e)
+        b = abs(float(material._b(state.v)))
+        if b == 0.0:
+            return label, 0.0
+        stress = LABEL_TOLERANCE * max(abs(state.sigma), 1e-6 * material.rho0 * abs(c2))
+        return label, stress * material._energy_factor(state.v) / b
+
     def matches(self, state: State) -> bool:
         mat = self.material
         if mat is None or not math.isfinite(state.v):
@@ -393,6 +408,14 @@ class IdealGasIsentrope(Isentrope):
         c_l = self.material.v0 * ratio / self.through.v * c
         return sigma, v, e, c_l
 
+    @staticmethod
+    def labels(material, state: State) -> tuple[float, float] | None:
+        """The label ``p v^gamma`` of ``state`` and its tolerance; ``None`` for a cold gas."""
+        if not state.sigma > 0.0:
+            return None
+        label = state.sigma * state.v**material.gamma
+        return label, LABEL_TOLERANCE * label
+
     def matches(self, state: State) -> bool:
         if not (math.isfinite(state.v) and state.sigma > 0.0):
             return False
@@ -419,38 +442,67 @@ def _inverse(coefs: np.ndarray, slope: np.ndarray, v: np.ndarray, samples: np.nd
     return chebyshev.coefficients(guess)
 
 
-def isentrope_for(material, state: State) -> Isentrope | None:
-    """A table of the isentrope of ``material`` through ``state``, or ``None`` when the
-    material's simple waves are not isentropic fans of ``(v, e)`` states (linear
-    elastic and elastic–plastic solids, whose waves are discontinuities or follow
-    branches the state does not tell) or the state is a vacuum or a cold gas."""
-    if not math.isfinite(state.v) or not getattr(material, "makes_fans", False):
+def _kind(material):
+    """The table class for a material, or ``None`` if its simple waves have no isentrope
+    table (linear elastic and elastic–plastic solids, whose waves are discontinuities
+    or follow branches the state does not tell)."""
+    if not getattr(material, "makes_fans", False):
         return None
     if isinstance(material, IdealGas):
-        return IdealGasIsentrope(material, state) if state.sigma > 0.0 else None
+        return IdealGasIsentrope
     if isinstance(material, AffineEnergyMaterial) and not getattr(material, "is_linear", False):
-        try:
-            return TabulatedIsentrope(material, state)
-        except StateOutOfRangeError:
-            return None
+        return TabulatedIsentrope
     return None
 
 
+def isentrope_for(material, state: State) -> Isentrope | None:
+    """A table of the isentrope of ``material`` through ``state``, or ``None`` (a material
+    without tables, a vacuum, a cold gas, a state outside the equation of state)."""
+    kind = _kind(material)
+    if kind is None or not math.isfinite(state.v) or not kind.labels(material, state):
+        return None
+    try:
+        return kind(material, state)
+    except StateOutOfRangeError:
+        return None
+
+
 class IsentropeTables:
-    """The isentropes of one run, one table per isentrope, shared by every region on it."""
+    """The isentropes of one run, one table per isentrope, shared by every region on it.
+
+    Tables are indexed per material by their label (an invariant of the isentrope:
+    ``K = e E(v) + F(v)`` for a Mie–Grüneisen solid, ``p v^gamma`` for a gas), so finding
+    the table of a state is a bisection, however many isentropes a run meets.
+    """
 
     def __init__(self):
+        self._labels: dict[int, list[float]] = {}
         self._tables: dict[int, list[Isentrope]] = {}
         self.built = 0
 
-    def table(self, material, state: State) -> Isentrope | None:
-        """The table through ``state`` (an existing one if ``state`` lies on it)."""
-        known = self._tables.setdefault(id(material), [])
-        for table in known:
+    def table(self, material, state: State, build: bool = True) -> Isentrope | None:
+        """The table through ``state``: an existing one if ``state`` lies on it, else a new
+        one (``build``) or ``None``."""
+        kind = _kind(material)
+        if kind is None or not math.isfinite(state.v):
+            return None
+        window = kind.labels(material, state)
+        if window is None:
+            return None
+        label, tolerance = window
+        labels = self._labels.setdefault(id(material), [])
+        tables = self._tables.setdefault(id(material), [])
+        lo = bisect.bisect_left(labels, label - tolerance)
+        hi = bisect.bisect_right(labels, label + tolerance)
+        for table in tables[lo:hi]:
             if table.material is material and table.matches(state):
                 return table
+        if not build:
+            return None
         table = isentrope_for(material, state)
         if table is not None:
-            known.append(table)
+            at = bisect.bisect_left(labels, label)
+            labels.insert(at, label)
+            tables.insert(at, table)
             self.built += 1
         return table

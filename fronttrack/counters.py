@@ -13,10 +13,12 @@ from dataclasses import dataclass
 class Counters:
     """Tallies of one run.
 
-    ``events``: events popped from the queue and solved (a lattice is one);
+    ``events``: events popped from the queue (the limit ``accuracy.max_events`` counts
+    these; the solution's event log holds those that changed something, a lattice
+    being one);
     ``lattices`` and ``nodes``: characteristic lattices solved in bulk and their nodes;
     ``riemann_solves``: events that went through the general Riemann solver;
-    ``tables``: isentropes tabulated; ``dropped_waves`` and ``dropped_stress``: waves
+    ``dropped_waves`` and ``dropped_stress``: waves
     weaker than the negligible stress and their total (Pa);
     ``neglected_entropy``: the largest relative volume jump of an entropy contact not
     tracked, ``neglected_contacts`` how many; ``unresolved_contacts``: contacts merged
@@ -30,7 +32,6 @@ class Counters:
     lattices: int = 0
     nodes: int = 0
     riemann_solves: int = 0
-    tables: int = 0
     dropped_waves: int = 0
     dropped_stress: float = 0.0
     neglected_entropy: float = 0.0

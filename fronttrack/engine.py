@@ -117,12 +117,8 @@ class Engine:
     def table_of(self, region: Region):
         """The isentrope table of a region's state (looked up once), or ``None``."""
         if region.table is UNKNOWN:
-            if self.resolution.release == Release.ISENTROPE:
-                built = self.tables.built
-                region.table = self.tables.table(region.material, region.state)
-                self.counters.tables += self.tables.built - built
-            else:
-                region.table = None
+            region.table = (self.tables.table(region.material, region.state)
+                            if self.resolution.release == Release.ISENTROPE else None)
         return region.table
 
     def invariants_of(self, region: Region) -> tuple[float, float]:

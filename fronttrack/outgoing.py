@@ -60,7 +60,10 @@ def wave_fronts(engine, waves, material, t: float, x: float, incoming,
 
 
 def _fan_fronts(engine, fan: Fan, material, t, x, parent, direction) -> list[WaveSpec]:
-    table = (engine.tables.table(material, fan.ahead)
+    # a one-ray wave uses the table of its isentrope if there is one already; a family
+    # of several characteristics (which lattices will cross) builds one
+    several = abs(fan.behind.sigma - fan.ahead.sigma) > engine.resolution.step
+    table = (engine.tables.table(material, fan.ahead, build=several)
              if engine.resolution.release == "isentrope" else None)
     if table is not None and not table.matches(fan.behind):
         table = None

@@ -209,11 +209,11 @@ class Solution:
         rays = sum(f.kind == FrontKind.RAY for f in engine.fronts) + sum(
             len(p.seg_id) for p in engine.patches)
         stats = {
-            "events": counters.events,
+            "events": len(engine.events),
             "lattices": counters.lattices,
             "lattice_nodes": counters.nodes,
             "riemann_solves": counters.riemann_solves,
-            "isentrope_tables": counters.tables,
+            "isentrope_tables": engine.tables.built,
             "fronts": len(engine.fronts) + sum(len(p.seg_id) for p in engine.patches),
             "regions": len(engine.regions) + sum(len(p.cell_id) for p in engine.patches),
             "rays": rays,
