@@ -105,8 +105,20 @@ class Isentrope(ABC):
         """``(sigma, e, C_L)`` at volume ``v`` on the isentrope (floats)."""
 
     @abstractmethod
-    def matches(self, state: State) -> bool:
-        """True when ``state`` lies on this isentrope (to rounding)."""
+    def stress_gap(self, state: State) -> float:
+        """How far ``state`` lies from this isentrope: the difference (Pa) between its
+        stress and the isentrope's at its volume."""
+
+    @abstractmethod
+    def rounding(self, state: State) -> float:
+        """The stress gap (Pa) below which ``state`` lies on the isentrope to rounding."""
+
+    def matches(self, state: State, tolerance: float = 0.0) -> bool:
+        """True when ``state`` lies on this isentrope to rounding, or within ``tolerance``
+        (Pa, a stress gap at equal volume the caller neglects)."""
+        if not math.isfinite(state.v):
+            return False
+        return self.stress_gap(state) <= max(self.rounding(state), tolerance)
 
     # --- built on the above ---------------------------------------------------------
     def resolves(self, spread: float) -> bool:
@@ -342,25 +354,30 @@ class TabulatedIsentrope(Isentrope):
         return sigma, v, e, np.sqrt(np.maximum(c2, 0.0))
 
     @staticmethod
-    def labels(material, state: State) -> tuple[float, float] | None:
-        """The isentrope label ``K`` of ``state`` and the width in ``K`` within which two
-        labels are one isentrope (``LABEL_TOLERANCE`` of the stress, at equal volume)."""
+    def labels(material, state: State, tolerance: float = 0.0) -> tuple[float, float] | None:
+        """The isentrope label ``K`` of ``state`` and the width in ``K`` within which a
+        label's isentrope passes within ``tolerance`` (Pa, at least the rounding) of it."""
         label = material._isentrope_label(state)
-        c2 = material.sound_speed_squared(state.v, state.e)
         b = abs(float(material._b(state.v)))
         if b == 0.0:
             return label, 0.0
-        stress = LABEL_TOLERANCE * max(abs(state.sigma), 1e-6 * material.rho0 * abs(c2))
+        stress = max(_mg_rounding(material, state), tolerance)
         return label, stress * material._energy_factor(state.v) / b
 
-    def matches(self, state: State) -> bool:
+    def stress_gap(self, state: State) -> float:
         mat = self.material
-        if mat is None or not math.isfinite(state.v):
-            return False
         label = mat._isentrope_label(state)
-        gap = abs(label - self._label) * abs(float(mat._b(state.v))) / mat._energy_factor(state.v)
-        c2 = mat.sound_speed_squared(state.v, state.e)
-        return gap <= LABEL_TOLERANCE * max(abs(state.sigma), 1e-6 * mat.rho0 * abs(c2))
+        return abs(label - self._label) * abs(float(mat._b(state.v))) / mat._energy_factor(
+            state.v)
+
+    def rounding(self, state: State) -> float:
+        return _mg_rounding(self.material, state)
+
+
+def _mg_rounding(material, state: State) -> float:
+    """``LABEL_TOLERANCE`` of the stress, or of a millionth of the bulk modulus near zero."""
+    c2 = material.sound_speed_squared(state.v, state.e)
+    return LABEL_TOLERANCE * max(abs(state.sigma), 1e-6 * material.rho0 * abs(c2))
 
 
 class IdealGasIsentrope(Isentrope):
@@ -409,19 +426,21 @@ class IdealGasIsentrope(Isentrope):
         return sigma, v, e, c_l
 
     @staticmethod
-    def labels(material, state: State) -> tuple[float, float] | None:
-        """The label ``p v^gamma`` of ``state`` and its tolerance; ``None`` for a cold gas."""
+    def labels(material, state: State, tolerance: float = 0.0) -> tuple[float, float] | None:
+        """The label ``p v^gamma`` of ``state`` and its window; ``None`` for a cold gas."""
         if not state.sigma > 0.0:
             return None
         label = state.sigma * state.v**material.gamma
-        return label, LABEL_TOLERANCE * label
+        return label, max(LABEL_TOLERANCE * label, tolerance * state.v**material.gamma)
 
-    def matches(self, state: State) -> bool:
-        if not (math.isfinite(state.v) and state.sigma > 0.0):
-            return False
-        mine = self._p_star * self.through.v**self.gamma
-        theirs = state.sigma * state.v**self.gamma
-        return abs(mine - theirs) <= LABEL_TOLERANCE * mine
+    def stress_gap(self, state: State) -> float:
+        if not state.sigma > 0.0:
+            return math.inf
+        mine = self._p_star * (self.through.v / state.v) ** self.gamma
+        return abs(mine - state.sigma)
+
+    def rounding(self, state: State) -> float:
+        return LABEL_TOLERANCE * abs(state.sigma)
 
 
 def _inverse(coefs: np.ndarray, slope: np.ndarray, v: np.ndarray, samples: np.ndarray,
@@ -472,31 +491,36 @@ class IsentropeTables:
 
     Tables are indexed per material by their label (an invariant of the isentrope:
     ``K = e E(v) + F(v)`` for a Mie–Grüneisen solid, ``p v^gamma`` for a gas), so finding
-    the table of a state is a bisection, however many isentropes a run meets.
+    the table of a state is a bisection, however many isentropes a run meets.  States
+    whose stress lies within ``tolerance`` (Pa) of a table's isentrope at their volume
+    share it: an entropy difference that small reflects nothing the run resolves (the
+    same rule by which the engine neglects entropy contacts).
     """
 
-    def __init__(self):
+    def __init__(self, tolerance: float = 0.0):
+        self.tolerance = tolerance
         self._labels: dict[int, list[float]] = {}
         self._tables: dict[int, list[Isentrope]] = {}
         self.built = 0
 
     def table(self, material, state: State, build: bool = True) -> Isentrope | None:
-        """The table through ``state``: an existing one if ``state`` lies on it, else a new
-        one (``build``) or ``None``."""
+        """The table through ``state``: the nearest existing one within the tolerance,
+        else a new one (``build``) or ``None``."""
         kind = _kind(material)
         if kind is None or not math.isfinite(state.v):
             return None
-        window = kind.labels(material, state)
+        window = kind.labels(material, state, self.tolerance)
         if window is None:
             return None
-        label, tolerance = window
+        label, width = window
         labels = self._labels.setdefault(id(material), [])
         tables = self._tables.setdefault(id(material), [])
-        lo = bisect.bisect_left(labels, label - tolerance)
-        hi = bisect.bisect_right(labels, label + tolerance)
-        for table in tables[lo:hi]:
-            if table.material is material and table.matches(state):
-                return table
+        lo = bisect.bisect_left(labels, label - width)
+        hi = bisect.bisect_right(labels, label + width)
+        near = [t for t in tables[lo:hi]
+                if t.material is material and t.matches(state, self.tolerance)]
+        if near:
+            return min(near, key=lambda t: t.stress_gap(state))
         if not build:
             return None
         table = isentrope_for(material, state)

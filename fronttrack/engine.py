@@ -63,7 +63,7 @@ class Engine:
         self.fractures = tuple(fractures)
         self.progress = progress
         self.counters = Counters()
-        self.tables = IsentropeTables()
+        self.tables = None  # made once the resolution (its tolerance) is known
         self._ids = itertools.count()
         self._region_ids = itertools.count()
         self._wave_ids = itertools.count()
@@ -80,6 +80,7 @@ class Engine:
         self.t_end = scene.t_end
         self.initial_states = [initial_state(layer) for layer in scene.layers]
         self.resolution: Resolution = resolve(scene, self.initial_states)
+        self.tables = IsentropeTables(self.resolution.negligible)
         self.head: Front | None = None
 
     # --- ids and objects ------------------------------------------------------------

@@ -144,13 +144,29 @@ def fracture(engine, plan) -> None:
     is left alone.
     """
     x, t = plan.x, plan.t
+    x_tol = engine.resolution.x_tol
     before = engine.head
     while before.next is not None and before.next.position(t) <= x:
         before = before.next
-    after, region = before.next, before.region_right
-    x_tol = engine.resolution.x_tol
-    if (after is None or region is None or region.state.sigma >= 0.0
-            or x - before.position(t) <= x_tol or after.position(t) - x <= x_tol):
+    after = before.next
+    if after is None:
+        return
+    if x - before.position(t) <= x_tol or after.position(t) - x <= x_tol:
+        # on a front (the first point of a level set often is a ray): in the more
+        # tensile of the two cells beside it, a hair from the front
+        on = before if x - before.position(t) <= x_tol else after
+        if on.is_site or on.prev is None or on.region_right is None:
+            return
+        left, right = on.prev.region_right, on.region_right
+        width = min(on.position(t) - on.prev.position(t), on.next.position(t) - on.position(t))
+        shift = min(1e-6 * engine.resolution.length, 0.5 * width)
+        if right.state.sigma <= left.state.sigma:
+            before, after, x = on, on.next, on.position(t) + shift
+        else:
+            before, after, x = on.prev, on, on.position(t) - shift
+    region = before.region_right
+    if region is None or region.state.sigma >= 0.0 or not (
+            x - before.position(t) > x_tol and after.position(t) - x > x_tol):
         return
     x_left, x_right = before.position(t), after.position(t)
     region.left_points.append((x_left, t))

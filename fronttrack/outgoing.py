@@ -65,7 +65,7 @@ def _fan_fronts(engine, fan: Fan, material, t, x, parent, direction) -> list[Wav
     several = abs(fan.behind.sigma - fan.ahead.sigma) > engine.resolution.step
     table = (engine.tables.table(material, fan.ahead, build=several)
              if engine.resolution.release == "isentrope" else None)
-    if table is not None and not table.matches(fan.behind):
+    if table is not None and not table.matches(fan.behind, engine.tables.tolerance):
         table = None
     characteristics = discretise_fan(fan, material, engine.resolution.step, table)
     if len(characteristics) == 1 and parent is not None and parent.kind == FrontKind.RAY:

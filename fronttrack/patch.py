@@ -23,7 +23,7 @@ from .kinds import FrontKind
 class LatticePatch:
     """Segments and cells that began and ended inside one lattice (SI units).
 
-    Segments: ``seg_id``, ``seg_x0``, ``seg_t0``, ``seg_t1``, ``seg_speed``,
+    ``layers``: the layer of each cell.  Segments: ``seg_id``, ``seg_x0``, ``seg_t0``, ``seg_t1``, ``seg_speed``,
     ``seg_direction``, ``seg_invariant``, ``seg_fan``, ``seg_ray_index``,
     ``seg_ray_count``, ``seg_left``/``seg_right`` (region ids), ``seg_jump`` (Pa).
     Cells: ``cell_id``, the state arrays, ``cell_t0``/``cell_t1``, and their boundary
@@ -33,7 +33,7 @@ class LatticePatch:
     """
 
     material: object
-    layer: int
+    layers: np.ndarray
     table: object
     seg_id: np.ndarray
     seg_x0: np.ndarray
@@ -90,7 +90,7 @@ class LatticePatch:
     def region_records(self) -> list[RegionRecord]:
         """The cells as frozen region records."""
         return [RegionRecord(id=int(self.cell_id[i]), state=self.state(i),
-                             material=self.material, layer=self.layer,
+                             material=self.material, layer=int(self.layers[i]),
                              t_start=float(self.cell_t0[i]),
                              t_end=None if math.isnan(self.cell_t1[i]) else float(
                                  self.cell_t1[i]),

@@ -336,7 +336,7 @@ class Solution:
         if isinstance(found, tuple):
             patch, i = found
             return RegionRecord(id=region_id, state=patch.state(i), material=patch.material,
-                                layer=patch.layer, t_start=float(patch.cell_t0[i]),
+                                layer=int(patch.layers[i]), t_start=float(patch.cell_t0[i]),
                                 t_end=float(patch.cell_t1[i]), in_fan=True,
                                 vertices=tuple(patch.polygon(i)), birth=patch.birth(i))
         return RegionRecord.of(found)

@@ -80,9 +80,10 @@ def _push(engine, plan: FracturePlan) -> None:
 
 
 def next_scheduled(engine, t: float) -> float:
-    """The earliest planned fracture at or after ``t`` (s), inf if none."""
+    """The earliest planned fracture after ``t`` (s), inf if none (one at ``t`` itself has
+    been made: fractures come first among the events of one instant)."""
     pending = engine.planned_fractures
-    while pending and pending[0] < t:
+    while pending and pending[0] <= t:
         heapq.heappop(pending)
     return pending[0] if pending else math.inf
 

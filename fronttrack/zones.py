@@ -1,22 +1,25 @@
 """Zones of one isentrope, handed to the method of characteristics.
 
-When rays meet each other, or a reflecting boundary, inside cells that all lie on one
-isentrope, the engine does not solve one Riemann problem per crossing: it gathers the
-maximal run of such rays around the event (the *zone*), solves the zone in bulk as a
-characteristic lattice (``characteristics.lattice``) up to the first time anything
-it does not model would happen, and splices the result back:
+When rays meet each other, a reflecting boundary, a gap face or a contact that the
+isentrope continues across, inside cells that all lie on one isentrope, the engine
+does not solve one Riemann problem per node: it gathers the maximal run of such rays
+and sites around the event (the *zone*), solves it in bulk as a characteristic
+lattice (``characteristics.lattice``) up to the first time anything it does not
+model would happen, and splices the result back:
 
 - input rays that met something end at their first node; rays and cells alive at
-  the cut become fronts and regions of the queue again;
+  the cut become fronts and regions of the queue again; the sites keep their place
+  and record the cells they bordered;
 - segments and cells that began and ended inside the lattice are stored as one
   ``LatticePatch`` (arrays), not as objects;
 - a lattice stopped by tension reaching the strength schedules the fracture at the
   first point of the continuous field where it does (``fronttrack.spall``).
 
 The zone's ends: a free surface, a wall or a prescribed boundary reflects (its next
-step bounds the zone in time); any other front (a shock, a contact, an interface, a
-gap, a ray of another isentrope) bounds it, and the zone stops when one of its rays
-would reach it or when that front's own next event comes.
+step bounds the zone in time), and so does a gap face whose far side lies on another
+isentrope; any other front (a shock, a contact to another isentrope, a ray of another
+isentrope) bounds it, and the zone stops when one of its rays would reach it or when
+that front's own next event comes.
 """
 
 from __future__ import annotations
@@ -38,9 +41,10 @@ from .solution import EventRecord
 
 @dataclass
 class _Run:
-    """The rays of a zone (left to right), the cells around them and the fronts at its ends."""
+    """The slots of a zone (rays and sites, left to right), the cells around them and the
+    fronts at its ends."""
 
-    rays: list[Front]
+    slots: list[Front]
     cells: list[Region]
     left_end: Front
     right_end: Front
@@ -60,83 +64,132 @@ def try_zone(engine, group: list[Front], t: float) -> bool:
     if lattice.nodes == 0:
         if lattice.fracture is None:
             return False
-        spall.schedule(engine, lattice, run.cells[0].layer, t)
+        spall.schedule(engine, lattice, _layer_at(run, lattice.fracture.x), t)
         _requeue(engine, run, t)
         return True
     _splice(engine, run, lattice, t)
     if lattice.fracture is not None:
-        spall.schedule(engine, lattice, run.cells[0].layer, t)
+        spall.schedule(engine, lattice, _layer_at(run, lattice.fracture.x), t)
     return True
 
 
 def _eligible(engine, group: list[Front]):
-    """The common isentrope of an event that is a crossing of rays, or rays reaching a
-    reflecting boundary; ``None`` otherwise."""
+    """The common isentrope of an event of rays meeting each other or a site the method
+    of characteristics handles; ``None`` otherwise."""
     rays = [f for f in group if f.kind == FrontKind.RAY]
     sites = [f for f in group if f.is_site]
     if not rays or len(rays) + len(sites) != len(group) or len(sites) > 1:
         return None
     if any(math.isnan(f.invariant) for f in rays):
         return None
-    if sites and not _reflects(engine, sites[0], group):
+    if sites and not _handles(engine, sites[0], group):
         return None
-    cells = [f.region_right for f in group[:-1]]
-    if group[0].prev is not None:
-        cells.append(group[0].prev.region_right)
-    if group[-1].region_right is not None:
-        cells.append(group[-1].region_right)
-    table = engine.table_of(cells[0])
-    if table is None or any(engine.table_of(c) is not table for c in cells[1:]):
+    cells = {id(c): c for c in _ray_cells(rays)}
+    table = engine.table_of(next(iter(cells.values())))
+    if table is None or any(engine.table_of(c) is not table for c in cells.values()):
         return None
     return table
 
 
-def _reflects(engine, site: Front, group: list[Front]) -> bool:
-    """A boundary of the stack at the end of the group (rays arriving at it)."""
-    if site.kind != FrontKind.BOUNDARY:
+def _ray_cells(rays: list[Front]) -> list[Region]:
+    """The cells on both sides of each ray."""
+    cells = []
+    for ray in rays:
+        cells.append(ray.region_right)
+        if ray.prev is not None:
+            cells.append(ray.prev.region_right)
+    return cells
+
+
+def _handles(engine, site: Front, group: list[Front]) -> bool:
+    """A site at which the lattice takes the rays: a boundary of the stack (rays arriving
+    at it), a gap, or a contact between two layers or states that the isentrope crosses
+    (``_passes``)."""
+    if site.kind == FrontKind.BOUNDARY:
+        return (site is group[-1]) if site.side == "right" else (site is group[0])
+    if site.kind == FrontKind.GAP:
+        return True
+    return _passes(engine, site)
+
+
+def _passes(engine, site: Front) -> bool:
+    """An interface or contact whose two sides lie on one isentrope (rays cross it)."""
+    if site.kind not in (FrontKind.INTERFACE, FrontKind.CONTACT) or site.prev is None:
         return False
-    return (site is group[-1]) if site.side == "right" else (site is group[0])
+    left, right = site.prev.region_right, site.region_right
+    return right is not None and engine.table_of(left) is not None \
+        and engine.table_of(left) is engine.table_of(right)
 
 
 def _collect(engine, group: list[Front], table) -> _Run:
-    """The maximal run of rays on ``table`` around the group."""
-    rays = [f for f in group if f.kind == FrontKind.RAY]
-    first, last = rays[0], rays[-1]
-    left = first.prev
-    while (left is not None and left.kind == FrontKind.RAY and not math.isnan(left.invariant)
-           and left.prev is not None and engine.table_of(left.prev.region_right) is table):
-        rays.insert(0, left)
+    """The maximal run of rays and sites on ``table`` around the group."""
+    slots = [f for f in group if f.kind == FrontKind.RAY or _inside(engine, f, table)]
+    left = slots[0].prev
+    while left is not None and _joins(engine, left, table, "left"):
+        slots.insert(0, left)
         left = left.prev
-    right = last.next
-    while (right is not None and right.kind == FrontKind.RAY
-           and not math.isnan(right.invariant) and right.region_right is not None
-           and engine.table_of(right.region_right) is table):
-        rays.append(right)
+    right = slots[-1].next
+    while right is not None and _joins(engine, right, table, "right"):
+        slots.append(right)
         right = right.next
-    cells = [rays[0].prev.region_right] + [r.region_right for r in rays]
-    return _Run(rays=rays, cells=cells, left_end=rays[0].prev, right_end=rays[-1].next,
+    cells = [slots[0].prev.region_right] + [f.region_right for f in slots]
+    return _Run(slots=slots, cells=cells, left_end=slots[0].prev, right_end=slots[-1].next,
                 table=table)
+
+
+def _inside(engine, front: Front, table) -> bool:
+    """A site that can sit inside a zone on ``table``: a contact the isentrope crosses,
+    or a gap with both faces on it."""
+    if front.kind == FrontKind.GAP:
+        return (front.prev is not None and front.region_right is not None
+                and engine.table_of(front.prev.region_right) is table
+                and engine.table_of(front.region_right) is table)
+    return _passes(engine, front) and engine.table_of(front.region_right) is table
+
+
+def _joins(engine, front: Front, table, side: str) -> bool:
+    """Whether ``front``, next to a run on ``table``, belongs to it."""
+    if front.kind == FrontKind.RAY:
+        if math.isnan(front.invariant):
+            return False
+        far = front.prev.region_right if side == "left" else front.region_right
+        return far is not None and engine.table_of(far) is table
+    return _inside(engine, front, table)
 
 
 def _zone(engine, run: _Run, t: float) -> moc.Zone:
     """The lattice input for a run at time ``t``."""
     invariants = [engine.invariants_of(c) for c in run.cells]
-    layer = run.cells[0].layer
     material = run.cells[0].material
     strength = (material.spall_strength if engine.scene.spall_criterion is None
                 else math.inf)
     left, left_horizon = _end(engine, run.left_end, "left", t)
     right, right_horizon = _end(engine, run.right_end, "right", t)
     horizon = min(engine.t_end, left_horizon, right_horizon, spall.next_scheduled(engine, t))
+    sites, carried = [], []
+    for front in run.slots:
+        if front.kind == FrontKind.RAY:
+            continue
+        if front.kind == FrontKind.GAP:
+            sites.append(moc.Site(moc.GAP, front.x0, width=front.gap_width,
+                                  time=front.gap_time))
+        else:
+            sites.append(moc.Site(moc.PASS, front.x0, strength=interactions.contact_strength(
+                engine, front, material)))
+    layers = {run.cells[0].layer} | {c.layer for c in run.cells}
+    for layer in layers:
+        carried += spall.carried_intervals(engine, layer)
+    rays = [f for f in run.slots]
     return moc.Zone(
         table=run.table,
-        family=np.array([r.direction for r in run.rays], dtype=np.int8),
-        own=np.array([r.invariant for r in run.rays]),
-        x0=np.array([r.x0 for r in run.rays]), t0=np.array([r.t0 for r in run.rays]),
-        speed=np.array([r.speed for r in run.rays]),
+        family=np.array([f.direction if f.kind == FrontKind.RAY else 0 for f in rays],
+                        dtype=np.int8),
+        own=np.array([f.invariant if f.kind == FrontKind.RAY else math.nan for f in rays]),
+        x0=np.array([f.x0 for f in rays]), t0=np.array([f.t0 for f in rays]),
+        speed=np.array([f.speed for f in rays]),
         jp=np.array([j[0] for j in invariants]), jm=np.array([j[1] for j in invariants]),
         left=left, right=right, t_now=t, horizon=horizon, strength=strength,
-        carried=spall.carried_intervals(engine, layer))
+        carried=tuple(carried), sites=tuple(sites))
 
 
 def _end(engine, front: Front, side: str, t: float):
@@ -147,7 +200,6 @@ def _end(engine, front: Front, side: str, t: float):
         value = interactions.boundary_value(front, spec, t)
         holds = "stress" if spec.kind in (BoundaryKind.FREE, BoundaryKind.STRESS) else "velocity"
         return moc.Reflector(front.x0, holds, value), interactions.next_step_time(front, t)
-    bound = moc.Bound(front.x0, front.t0, front.speed)
     outer = front.prev if side == "left" else front.next
     horizon = math.inf
     if outer is not None:
@@ -156,39 +208,57 @@ def _end(engine, front: Front, side: str, t: float):
         if closing > 0.0:
             horizon = t + max(b.position(t) - a.position(t), 0.0) / closing
     if front.kind == FrontKind.GAP:
-        left_u, right_u = front.prev.region_right.state.u, front.region_right.state.u
-        if left_u > right_u:
-            horizon = min(horizon, front.gap_time + front.gap_width / (left_u - right_u))
-    return bound, horizon
+        # the face across the gap keeps its velocity until a wave reaches it
+        far = front.prev.region_right if side == "left" else front.region_right
+        gap = (far.state.u, front.gap_width, front.gap_time)
+        return moc.Reflector(front.x0, "stress", 0.0, gap=gap), horizon
+    return moc.Bound(front.x0, front.t0, front.speed), horizon
+
+
+def _layer_at(run: _Run, x: float) -> int:
+    """The layer of the run's cell around ``x`` (m)."""
+    sites = [f.x0 for f in run.slots if f.is_site]
+    count = sum(1 for s in sites if s < x)
+    return _layers(run)[count]
+
+
+def _layers(run: _Run) -> list[int]:
+    """The layer of the cells with ``j`` sites of the run to their left, by ``j``."""
+    layers = [run.cells[0].layer]
+    for k, front in enumerate(run.slots):
+        if front.is_site:
+            layers.append(run.cells[k + 1].layer)
+    return layers
 
 
 def _requeue(engine, run: _Run, t: float) -> None:
     """Put the run's pairs back in the queue (nothing of it was solved)."""
-    chain = [run.left_end, *run.rays, run.right_end]
+    chain = [run.left_end, *run.slots, run.right_end]
     for a, b in zip(chain[:-1], chain[1:], strict=True):
         engine.push_pair(a, b, t)
 
 
 def _splice(engine, run: _Run, lat: moc.Lattice, t: float) -> None:
     """Write the solved lattice back into the engine (see the module docstring)."""
-    k = len(run.rays)
+    k = len(run.slots)
     n_seg, n_cell = len(lat.seg_x0), len(lat.cell_sigma)
     live_seg, live_cell = lat.live_segments, lat.live_cells
     is_live_cell = np.zeros(n_cell, bool)
     is_live_cell[live_cell] = True
     is_live_seg = np.zeros(n_seg, bool)
     is_live_seg[live_seg] = True
-    material, layer = run.cells[0].material, run.cells[0].layer
+    material = run.cells[0].material
+    layer_of = np.array(_layers(run))[lat.cell_sites]
     # --- cells: ids, objects for inputs and live ones
     cell_ids = np.empty(n_cell, dtype=int)
     cell_ids[:k + 1] = [c.id for c in run.cells]
     for j in range(k + 1, n_cell):
         cell_ids[j] = engine.next_region_id()
     order = np.lexsort((lat.node_t[lat.chain_node], lat.chain_side, lat.chain_cell))
-    chain_cell = lat.chain_cell[order]
     chain_side = lat.chain_side[order]
-    chain_x, chain_t = lat.node_x[lat.chain_node[order]], lat.node_t[lat.chain_node[order]]
-    bounds = np.searchsorted(chain_cell, np.arange(n_cell + 1))
+    chain_x = lat.node_x[lat.chain_node[order]]
+    chain_t = lat.node_t[lat.chain_node[order]]
+    bounds = np.searchsorted(lat.chain_cell[order], np.arange(n_cell + 1))
     regions: dict[int, Region] = {j: run.cells[j] for j in range(k + 1)}
     for j in range(k + 1):
         _extend_chains(run.cells[j], chain_side, chain_x, chain_t, bounds[j], bounds[j + 1])
@@ -197,26 +267,26 @@ def _splice(engine, run: _Run, lat: moc.Lattice, t: float) -> None:
     for j in np.nonzero(is_live_cell[k + 1:])[0] + k + 1:
         j = int(j)
         region = Region(id=int(cell_ids[j]), state=_state(lat, j), material=material,
-                        layer=layer, t_start=float(lat.cell_t0[j]), left_points=[],
-                        right_points=[], in_fan=True, table=run.table,
+                        layer=int(layer_of[j]), t_start=float(lat.cell_t0[j]),
+                        left_points=[], right_points=[], in_fan=True, table=run.table,
                         invariants=(float(lat.cell_jp[j]), float(lat.cell_jm[j])))
         _extend_chains(region, chain_side, chain_x, chain_t, bounds[j], bounds[j + 1])
         engine.regions.append(region)
         regions[j] = region
     # --- segments: close the inputs that ended, make fronts of the new live ones
     fans = _fan_ids(engine, run, lat)
-    for i, ray in enumerate(run.rays):
-        if not math.isnan(lat.seg_t1[i]):
-            ray.alive = False
-            ray.t1 = float(lat.seg_t1[i])
-            ray.x1 = ray.position(ray.t1)
-            ray.right_region_id = ray.region_right.id
+    for i, front in enumerate(run.slots):
+        if front.kind == FrontKind.RAY and not math.isnan(lat.seg_t1[i]):
+            front.alive = False
+            front.t1 = float(lat.seg_t1[i])
+            front.x1 = front.position(front.t1)
+            front.right_region_id = front.region_right.id
     live_fronts = []
     for s in live_seg.tolist():
         if s < k:
-            live_fronts.append(run.rays[s])
+            live_fronts.append(run.slots[s])
             continue
-        source = run.rays[int(lat.seg_tag[s])]
+        source = run.slots[int(lat.seg_tag[s])]
         left_cell, right_cell = int(lat.seg_left[s]), int(lat.seg_right[s])
         front = engine.new_front(
             FrontKind.RAY, float(lat.seg_x0[s]), float(lat.seg_t0[s]),
@@ -225,23 +295,23 @@ def _splice(engine, run: _Run, lat: moc.Lattice, t: float) -> None:
             fan=int(fans[s]), ray_index=source.ray_index, ray_count=source.ray_count,
             invariant=float(lat.seg_own[s]))
         front.left_region = int(cell_ids[left_cell])
-        front.region_right = regions[right_cell]
         live_fronts.append(front)
-    # --- the end that reflected changes its region on the right
-    previous = run.cells[0].id
-    for when, cell in lat.end_changes["left"]:
-        run.left_end.earlier_regions.append((when, previous))
-        previous = int(cell_ids[cell])
-    run.left_end.region_right = regions[int(live_cell[0])]
-    # --- relink and queue the new neighbours
+    # --- the regions right of each front, and the sites' earlier ones
     chain = [run.left_end, *live_fronts, run.right_end]
+    sites = [f for f in run.slots if f.is_site]
+    for index, site in enumerate(sites):
+        _record_changes(site, lat.site_changes[index], cell_ids)
+    _record_changes(run.left_end, lat.site_changes["left"], cell_ids)
+    for position, front in enumerate(chain[:-1]):
+        front.region_right = regions[int(live_cell[position])]
     for a, b in zip(chain[:-1], chain[1:], strict=True):
         a.next, b.prev = b, a
+    _update_gaps(engine, run, lat, sites)
     for a, b in zip(chain[:-1], chain[1:], strict=True):
         engine.push_pair(a, b, t)
     # --- the interior as one patch
-    patch = _patch(engine, run, lat, cell_ids, is_live_cell, is_live_seg, fans, chain_x,
-                   chain_t, chain_side, bounds)
+    patch = _patch(engine, run, lat, cell_ids, layer_of, is_live_cell, is_live_seg, fans,
+                   chain_x, chain_t, chain_side, bounds)
     if patch is not None:
         engine.patches.append(patch)
     _note_tension(engine, lat, k)
@@ -249,9 +319,28 @@ def _splice(engine, run: _Run, lat: moc.Lattice, t: float) -> None:
     engine.counters.nodes += lat.nodes
     engine.events.append(EventRecord(
         t=t, x=float(lat.node_x[0]), kind=EventKind.LATTICE,
-        incoming=[r.id for i, r in enumerate(run.rays) if not math.isnan(lat.seg_t1[i])],
-        outgoing=[f.id for f in live_fronts if f not in run.rays], site=None,
+        incoming=[f.id for i, f in enumerate(run.slots)
+                  if f.kind == FrontKind.RAY and not math.isnan(lat.seg_t1[i])],
+        outgoing=[f.id for f in live_fronts if f not in run.slots], site=None,
         nodes=lat.nodes))
+
+
+def _record_changes(front: Front, changes: list, cell_ids: np.ndarray) -> None:
+    """A site's region on its right changed at these ``(t, cell)``: keep the earlier ones
+    (the last one becomes its ``region_right``)."""
+    previous = front.region_right.id
+    for when, cell in changes:
+        front.earlier_regions.append((when, previous))
+        previous = int(cell_ids[cell])
+
+
+def _update_gaps(engine, run: _Run, lat: moc.Lattice, sites: list[Front]) -> None:
+    """Gaps the lattice followed: their widths at the cut, and their closing re-queued."""
+    for key, (width, time) in lat.gaps.items():
+        gap = (sites[key] if isinstance(key, int)
+               else run.left_end if key == "left" else run.right_end)
+        gap.gap_width, gap.gap_time = width, time
+        engine.push_gap_closure(gap)
 
 
 def _state(lat, j: int) -> State:
@@ -272,27 +361,27 @@ def _extend_chains(region: Region, side, xs, ts, start: int, end: int) -> None:
 
 
 def _fan_ids(engine, run: _Run, lat) -> np.ndarray:
-    """A fan id per segment: its source ray's, or a new one per end for reflected rays."""
-    source_fan = np.array([r.fan if r.fan is not None else -1 for r in run.rays])
-    source_dir = np.array([r.direction for r in run.rays])
+    """A fan id per segment: its source ray's, or a new one per direction for rays the
+    lattice reflected."""
+    source_fan = np.array([f.fan if f.fan is not None else -1 for f in run.slots])
+    source_dir = np.array([f.direction for f in run.slots])
     fans = source_fan[lat.seg_tag]
-    reflected = lat.seg_family != source_dir[lat.seg_tag]
-    if np.any(reflected):
-        new_ids = {}
-        for s in np.nonzero(reflected)[0]:
-            key = (int(lat.seg_tag[s]) >= 0, int(lat.seg_family[s]))
-            if key not in new_ids:
-                new_ids[key] = engine.next_wave_id()
-            fans[s] = new_ids[key]
+    reflected = (lat.seg_family != source_dir[lat.seg_tag]) & (lat.seg_family != 0)
+    new_ids = {}
+    for s in np.nonzero(reflected)[0]:
+        key = int(lat.seg_family[s])
+        if key not in new_ids:
+            new_ids[key] = engine.next_wave_id()
+        fans[s] = new_ids[key]
     return fans
 
 
-def _patch(engine, run, lat, cell_ids, is_live_cell, is_live_seg, fans, chain_x, chain_t,
-           chain_side, bounds) -> LatticePatch | None:
+def _patch(engine, run, lat, cell_ids, layer_of, is_live_cell, is_live_seg, fans, chain_x,
+           chain_t, chain_side, bounds) -> LatticePatch | None:
     """The segments and cells that began and ended inside the lattice."""
-    k = len(run.rays)
+    k = len(run.slots)
     segs = np.nonzero(~is_live_seg)[0]
-    segs = segs[segs >= k]
+    segs = segs[(segs >= k)]
     cells = np.nonzero(~is_live_cell)[0]
     cells = cells[cells > k]
     if not segs.size and not cells.size:
@@ -301,7 +390,6 @@ def _patch(engine, run, lat, cell_ids, is_live_cell, is_live_seg, fans, chain_x,
     behind = np.where(lat.seg_family[segs] > 0, lat.seg_left[segs], lat.seg_right[segs])
     ahead = np.where(lat.seg_family[segs] > 0, lat.seg_right[segs], lat.seg_left[segs])
     source = lat.seg_tag[segs]
-    # chains of the patch cells, left side then right side, contiguous per cell
     starts, splits, xs, ts = [0], [], [], []
     for j in cells.tolist():
         a, b = bounds[j], bounds[j + 1]
@@ -313,13 +401,13 @@ def _patch(engine, run, lat, cell_ids, is_live_cell, is_live_seg, fans, chain_x,
         splits.append(starts[-1] + left.size)
         starts.append(starts[-1] + left.size + right.size)
     return LatticePatch(
-        material=run.cells[0].material, layer=run.cells[0].layer, table=run.table,
+        material=run.cells[0].material, layers=layer_of[cells], table=run.table,
         seg_id=seg_ids, seg_x0=lat.seg_x0[segs], seg_t0=lat.seg_t0[segs],
         seg_t1=lat.seg_t1[segs], seg_speed=lat.seg_speed[segs],
         seg_direction=lat.seg_family[segs], seg_invariant=lat.seg_own[segs],
         seg_fan=fans[segs],
-        seg_ray_index=np.array([run.rays[s].ray_index for s in source.tolist()], dtype=int),
-        seg_ray_count=np.array([run.rays[s].ray_count for s in source.tolist()], dtype=int),
+        seg_ray_index=np.array([run.slots[s].ray_index for s in source.tolist()], dtype=int),
+        seg_ray_count=np.array([run.slots[s].ray_count for s in source.tolist()], dtype=int),
         seg_left=cell_ids[lat.seg_left[segs]], seg_right=cell_ids[lat.seg_right[segs]],
         seg_jump=lat.cell_sigma[behind] - lat.cell_sigma[ahead],
         cell_id=cell_ids[cells], cell_sigma=lat.cell_sigma[cells], cell_u=lat.cell_u[cells],
@@ -334,8 +422,7 @@ def _note_tension(engine, lat, k: int) -> None:
     """The largest tension among the lattice's new cells, where it first appeared."""
     if len(lat.cell_sigma) <= k + 1:
         return
-    new = lat.cell_sigma[k + 1:]
-    j = int(np.argmin(new)) + k + 1
+    j = int(np.argmin(lat.cell_sigma[k + 1:])) + k + 1
     born = lat.chain_cell == j
     x = float(np.mean(lat.node_x[lat.chain_node[born]])) if np.any(born) else 0.0
     engine.note_stress(float(lat.cell_sigma[j]), x, float(lat.cell_t0[j]))
