@@ -101,6 +101,10 @@ class Isentrope(ABC):
         """``(sigma, v, e, C_L)`` at the stress-function values ``phi`` (arrays)."""
 
     @abstractmethod
+    def arrays_at_stress(self, sigma: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """``(phi, C_L)`` at the stresses ``sigma`` (arrays)."""
+
+    @abstractmethod
     def point_at_volume(self, v: float) -> tuple[float, float, float]:
         """``(sigma, e, C_L)`` at volume ``v`` on the isentrope (floats)."""
 
@@ -280,7 +284,7 @@ class TabulatedIsentrope(Isentrope):
         self._sigma_keys = [-p.sigma_hi for p in panels] + [-panels[-1].sigma_lo]
         self._phi_lists = [(p.v_of_phi.tolist(), p.phi_lo, p.phi_hi) for p in panels]
         self._sigma_lists = [(p.v_of_sigma.tolist(), p.sigma_lo, p.sigma_hi) for p in panels]
-        self._stack = None
+        self._stack = self._stress_stack = None
 
     def _range_message(self) -> str:
         lo, hi = self._limits
@@ -353,6 +357,37 @@ class TabulatedIsentrope(Isentrope):
         sigma, e, c2 = self.material.isentrope_arrays(self.through, v)
         return sigma, v, e, np.sqrt(np.maximum(c2, 0.0))
 
+    def arrays_at_stress(self, sigma: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        sigma = np.asarray(sigma, dtype=float)
+        if sigma.size:
+            self._index_by_sigma(float(np.max(sigma)))
+            self._index_by_sigma(float(np.min(sigma)))
+        if self._stress_stack is None:
+            self._stress_stack = self._stacked_by_stress()
+        keys, coefs, lo, hi, v_edges, phi_coefs, c_coefs = self._stress_stack
+        last = len(lo) - 1
+        index = np.clip(np.searchsorted(keys, -sigma, side="right") - 1, 0, last)
+        v = chebyshev.evaluate_many(coefs[index], lo[index], hi[index], sigma)
+        vi = np.clip(np.searchsorted(v_edges, v, side="right") - 1, 0, last)
+        phi = chebyshev.evaluate_many(phi_coefs[vi], v_edges[vi], v_edges[vi + 1], v)
+        c = chebyshev.evaluate_many(c_coefs[vi], v_edges[vi], v_edges[vi + 1], v)
+        return phi, c
+
+    def _stacked_by_stress(self) -> tuple[np.ndarray, ...]:
+        """The panels' series as arrays for ``arrays_at_stress`` (zero-padded)."""
+        panels = self._panels
+
+        def padded(name):
+            width = max(len(getattr(p, name)) for p in panels)
+            out = np.zeros((len(panels), width))
+            for i, p in enumerate(panels):
+                out[i, :len(getattr(p, name))] = getattr(p, name)
+            return out
+
+        return (np.array(self._sigma_keys), padded("v_of_sigma"),
+                np.array([p.sigma_lo for p in panels]), np.array([p.sigma_hi for p in panels]),
+                np.array(self._v_edges), padded("phi"), padded("c"))
+
     @staticmethod
     def labels(material, state: State, tolerance: float = 0.0) -> tuple[float, float] | None:
         """The isentrope label ``K`` of ``state`` and the width in ``K`` within which a
@@ -413,6 +448,14 @@ class IdealGasIsentrope(Isentrope):
             return 0.0, 0.0, 0.0
         sigma, e, c2 = self.material.isentrope_arrays(self.through, np.array([v]))
         return float(sigma[0]), float(e[0]), math.sqrt(max(float(c2[0]), 0.0))
+
+    def arrays_at_stress(self, sigma: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        sigma = np.asarray(sigma, dtype=float)
+        if np.any(sigma < 0.0):
+            raise StateOutOfRangeError(f"{self.material.name}: a gas carries no tension")
+        c = self._c_star * (sigma / self._p_star) ** self._exponent
+        phi = 2.0 * (c - self._c_star) / (self.gamma - 1.0)
+        return phi, self.arrays_at_phi(phi)[3]
 
     def arrays_at_phi(self, phi: np.ndarray) -> tuple[np.ndarray, ...]:
         c = self._sound(np.asarray(phi, dtype=float))

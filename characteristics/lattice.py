@@ -24,24 +24,25 @@ Inside a zone every interaction is a node of the method of characteristics:
   far side has the invariants of the one on the near side.
 
 States depend on the invariants alone, so every state the zone can reach is a point of
-the grid ``(J+ values) x (J- values)`` (the reflections close the two sets); the grid
-is evaluated on the isentrope once, in one vectorised call.  The geometry is then swept
-in parallel: every adjacent pair ``(C+, C-)`` crosses at once (crossings of disjoint
-pairs commute), every ray at a boundary, a face or a contact is handled, and the sweep
-repeats.  A lattice of ``N x M`` nodes needs about ``N + M`` sweeps.
+the grid ``(J+ values) x (J- values)`` (the reflections close the two sets;
+``characteristics.grid``), evaluated on the isentrope once, in one vectorised call.
+The nodes are then solved in time order from a local queue: each is a few lookups in
+the grid and two line intersections.
 
-The zone stops (is *cut*) at the first time anything it does not model would happen,
-found in a first pass and enforced in a second: the horizon given by the caller (the
-next event of the fronts bounding it, the end time); a ray reaching a bounding front;
-two rays of one family converging (a compression steepening into a shock); a contact
-reaching the tension it carries (it opens); a gap closing; a state outside the table;
-tension reaching the material's strength (the first fracture point, located on the
-continuous field by ``characteristics.fracture``).  Everything before the cut is final;
-the rays and cells alive at the cut go back to the engine's queue.
+The zone stops (is *cut*) at the first time anything it does not model would happen:
+the horizon given by the caller (the next event of the fronts bounding it, the end
+time); a ray reaching a bounding front; two rays of one family converging (a
+compression steepening into a shock); a contact reaching the tension it carries (it
+opens); a gap closing; a state outside the grid; tension reaching the material's
+strength (a first pass runs past it so that the whole unrelieved field is known, and
+the first fracture point with its zone is located on that continuous field by
+``characteristics.fracture``; a second pass stops there).  Everything before the cut
+is final; the rays and cells alive at the cut go back to the engine's queue.
 """
 
 from __future__ import annotations
 
+import heapq
 import math
 from dataclasses import dataclass, field
 
@@ -50,11 +51,8 @@ import numpy as np
 from materials import StateOutOfRangeError
 
 from .fracture import FractureZone, fracture_zone
+from .grid import Grid, GridTooLarge
 from .isentrope import Isentrope
-
-REFLECTION_ROUNDS = 4
-"""Reflections of reflections tabulated in the grid of invariants (a ray ringing between
-two reflecting ends needs more; the zone is cut where the grid runs out)."""
 
 CROSSING, RIGHT_REFLECTION, LEFT_REFLECTION, PASSAGE = 0, 1, 2, 3
 """Kinds of node."""
@@ -68,12 +66,33 @@ class Reflector:
     """A reflecting end of a zone at position ``x`` (m): it holds ``"stress"`` or
     ``"velocity"`` at ``value`` (Pa or m/s).  The face of a gap is a free surface with
     ``gap``: ``(u_other, width, time)``, the velocity (m/s) of the face across the gap
-    and the gap's Eulerian width (m) at ``time`` (s), so that the zone sees it close."""
+    and the gap's Eulerian width (m) at ``time`` (s), so that the zone sees it close.
+    A contact to another isentrope (``holds = "join"``, ``join`` its far side) reflects
+    what arrives by the contact node of the method of characteristics (equal stress and
+    velocity on both sides, each side's invariants on its own isentrope) and sends the
+    transmitted characteristics into the far side (``Lattice.emitted``)."""
 
     x: float
     holds: str
     value: float
     gap: tuple | None = None
+    join: Join | None = None
+
+
+@dataclass(frozen=True)
+class Join:
+    """The far side of a contact that ends a zone on another isentrope: its ``table``,
+    the invariant its cell at the contact keeps while nothing arrives from that side
+    (``J-`` beyond a right end, ``J+`` beyond a left end), the tension the contact
+    carries (``strength``, Pa), the contact's stress now (``stress``, Pa, where the
+    contact node's iteration starts) and the front that bounds the far cell (``bound``:
+    rays sent through the contact must not reach it inside the zone)."""
+
+    table: Isentrope
+    invariant: float
+    strength: float
+    stress: float
+    bound: Bound | None = None
 
 
 @dataclass(frozen=True)
@@ -113,6 +132,7 @@ class Zone:
     tension the material carries, except inside the ``carried`` intervals
     ``(x_lo, x_hi)`` (m) of earlier fracture zones.  ``tag``: a label per slot, carried
     through crossings and reflections to the segments it makes (``Lattice.seg_tag``).
+    ``max_nodes``: the zone stops (``"node budget"``) before its node count passes it.
     """
 
     table: Isentrope
@@ -131,6 +151,7 @@ class Zone:
     tag: np.ndarray | None = None
     carried: tuple = ()
     sites: tuple = ()
+    max_nodes: int = 10**9
 
 
 @dataclass
@@ -149,6 +170,8 @@ class Lattice:
     left to right.  ``site_changes``: per site (in order, then ``"left"``/``"right"`` for
     the ends), the ``(t, cell)`` changes of the cell on its right (left end: the cell
     at it).  ``gaps``: per gap site and gap end, ``(width, time)`` at the cut.
+    ``emitted``: per join end, the rays sent into the far side (arrays ``t``, ``x``,
+    ``own``, ``speed``) and the far cells behind them (``jp``, ``jm`` and the state).
     ``node_*``: the nodes, with the stress each carries and its kind.  ``cut`` (s) and
     ``reason`` say where and why the zone stopped; ``fracture`` is the first point where
     tension reaches the strength with the zone the threshold fractures, if that is the
@@ -187,84 +210,12 @@ class Lattice:
     live_cells: np.ndarray = None
     site_changes: dict = field(default_factory=dict)
     gaps: dict = field(default_factory=dict)
+    emitted: dict = field(default_factory=dict)
     cut: float = math.inf
     reason: str = ""
     fracture: FractureZone | None = None
     tension_at: float = math.inf
     tension_sample: tuple | None = None
-
-
-# --- the grid of states ------------------------------------------------------------------
-class _Grid:
-    """States on the grid of invariant values ``P x M`` (``J+`` values by ``J-`` values),
-    closed under the reflections the zone can make."""
-
-    def __init__(self, zone: Zone):
-        table = zone.table
-        self.to_minus = []  # conditions mapping J+ to J- (a right end, a gap's left face)
-        self.to_plus = []  # conditions mapping J- to J+ (a left end, a gap's right face)
-        if isinstance(zone.right, Reflector):
-            self.to_minus.append((zone.right.holds, zone.right.value))
-        if isinstance(zone.left, Reflector):
-            self.to_plus.append((zone.left.holds, zone.left.value))
-        if any(site.kind == GAP for site in zone.sites):
-            self.to_minus.append(("stress", 0.0))
-            self.to_plus.append(("stress", 0.0))
-        p_values = np.unique(np.concatenate([zone.jp, zone.own[zone.family > 0]]))
-        m_values = np.unique(np.concatenate([zone.jm, zone.own[zone.family < 0]]))
-        for _ in range(REFLECTION_ROUNDS):
-            grown = False
-            for condition in self.to_minus:
-                new = np.setdiff1d(_reflect(table, condition, p_values, -1), m_values)
-                if new.size:
-                    m_values, grown = np.union1d(m_values, new), True
-            for condition in self.to_plus:
-                new = np.setdiff1d(_reflect(table, condition, m_values, +1), p_values)
-                if new.size:
-                    p_values, grown = np.union1d(p_values, new), True
-            if not grown:
-                break
-        self.p, self.m = p_values, m_values
-        phi = 0.5 * (p_values[:, None] - m_values[None, :])
-        sigma, v, e, c = table.arrays_at_phi(phi.ravel())
-        self.sigma, self.v, self.e, self.c = (a.reshape(phi.shape) for a in (sigma, v, e, c))
-        self.u = 0.5 * (p_values[:, None] + m_values[None, :])
-        self.maps = {}
-        for condition in self.to_minus:
-            self.maps[(-1, condition)] = _index_map(_reflect(table, condition, p_values, -1),
-                                                    m_values)
-        for condition in self.to_plus:
-            self.maps[(+1, condition)] = _index_map(_reflect(table, condition, m_values, +1),
-                                                    p_values)
-
-    def p_index(self, values):
-        return np.searchsorted(self.p, values)
-
-    def m_index(self, values):
-        return np.searchsorted(self.m, values)
-
-
-def _reflect(table: Isentrope, condition, values: np.ndarray, to: int) -> np.ndarray:
-    """Invariants a boundary holding ``condition`` (``(holds, value)``) reflects from
-    ``values``: ``to = -1`` maps ``J+`` to ``J-`` (a right end), ``+1`` maps ``J-`` to ``J+``."""
-    holds, value = condition
-    if holds == "velocity":
-        return 2.0 * value - values
-    phi_b = table.phi_at_stress(value)
-    return values - 2.0 * phi_b if to < 0 else values + 2.0 * phi_b
-
-
-def _index_map(values: np.ndarray, table_values: np.ndarray) -> np.ndarray:
-    index = np.clip(np.searchsorted(table_values, values), 0, len(table_values) - 1)
-    return np.where(table_values[index] == values, index, -1)
-
-
-def _meet(x0a, t0a, sa, x0b, t0b, sb):
-    """Time at which two lines ``X = x0 + s (t - t0)`` meet (inf if they do not approach)."""
-    closing = sa - sb
-    with np.errstate(divide="ignore", invalid="ignore"):
-        t = (x0b - x0a + sa * t0a - sb * t0b) / closing
-    return np.where(closing > 0.0, np.maximum(t, np.maximum(t0a, t0b)), np.inf)
 
 
 # --- solving -----------------------------------------------------------------------------
@@ -277,22 +228,20 @@ def solve(zone: Zone) -> Lattice:
     and a second pass stops at the first fracture.
     """
     try:
-        grid = _Grid(zone)
+        grid = Grid(zone)
     except StateOutOfRangeError:
-        return _Sweeper(zone, None, zone.t_now).unchanged("state outside the table")
-    first = _Sweeper(zone, grid, zone.horizon).run()
-    cut, reason, found = first.cut, first.reason, None
-    if first.tension_at < cut:
+        return _March(zone, None).unchanged("state outside the table")
+    except GridTooLarge:
+        return _March(zone, None).unchanged("grid too large")
+    first = _March(zone, grid).run(zone.horizon)
+    if first.tension_at < first.cut:
         found = _fracture_zone(zone, first)
-        if found is not None and found.t < cut:
-            cut, reason = max(found.t, zone.t_now), "tension"
-    if first.nodes and np.max(first.node_t) >= cut:
-        result = _Sweeper(zone, grid, cut).run()
-    else:
-        result = first
-    result.cut, result.reason = cut, reason
-    result.fracture = found if reason == "tension" else None
-    return result
+        if found is not None and found.t < first.cut:
+            cut = max(found.t, zone.t_now)
+            result = _March(zone, grid).run(cut) if first.nodes else first
+            result.cut, result.reason, result.fracture = cut, "tension", found
+            return result
+    return first
 
 
 def _fracture_zone(zone: Zone, lattice: Lattice):
@@ -305,259 +254,300 @@ def _fracture_zone(zone: Zone, lattice: Lattice):
     return fracture_zone(lattice, strength, speed, zone.carried)
 
 
-_CROSSING_SIDES = np.array([0, 1, 1, 0, 0, 1])
-"""Chain sides at a crossing or a passage: the cell between the two closes (both sides),
-the cell left of the pair gains a vertex on its right, the cell right of it on its
-left, the new cell opens."""
+def _meet(x0a: float, t0a: float, sa: float, x0b: float, t0b: float, sb: float) -> float:
+    """When the line of ``a`` (left) reaches the line of ``b`` (inf if they do not approach)."""
+    closing = sa - sb
+    if not closing > 0.0:
+        return math.inf
+    t = (x0b - x0a + sa * t0a - sb * t0b) / closing
+    return max(t, t0a, t0b)
 
 
-class _Sweeper:
-    """One pass over a zone: the state arrays, the records, the exceptions."""
+class _March:
+    """One pass over a zone in time order: a local queue of the nodes the rays of the zone
+    will make with each other, with its sites and with its ends, each node solved from
+    the grid of states when it comes.  The state of a slot (a ray or a site) is its
+    current line; a pair of neighbouring slots or a slot at an end has at most one next
+    event; a change of a slot (``version``) makes its earlier events stale."""
 
-    def __init__(self, zone: Zone, grid: _Grid | None, cut: float):
-        self.zone, self.grid, self.cut = zone, grid, cut
+    def __init__(self, zone: Zone, grid: Grid | None):
+        self.zone, self.grid = zone, grid
         k = len(zone.family)
         self.k = k
-        self.fam = zone.family.astype(np.int8).copy()
-        self.x0 = zone.x0.astype(float).copy()
-        self.t0 = zone.t0.astype(float).copy()
-        self.sp = zone.speed.astype(float).copy()
-        self.seg = np.arange(k)
-        self.tag = (np.arange(k) if zone.tag is None else np.asarray(zone.tag, int)).copy()
-        self.cell = np.arange(k + 1)
-        self.site_of_slot = np.full(k, -1)
-        self.site_of_slot[np.nonzero(self.fam == 0)[0]] = np.arange(len(zone.sites))
-        # records, joined at the end
-        self.seg_rec = {"x0": [self.x0.copy()], "t0": [self.t0.copy()],
-                        "speed": [self.sp.copy()], "family": [self.fam.astype(int)],
-                        "own": [zone.own.astype(float)], "left": [np.arange(k)],
-                        "right": [np.arange(1, k + 1)], "start": [np.full(k, -1)],
-                        "tag": [self.tag.copy()]}
-        self.n_seg, self.n_cell, self.n_node = k, k + 1, 0
-        self.seg_end, self.cell_end = ([], []), ([], [])
-        self.chain = ([], [], [])
-        self.node = {"x": [], "t": [], "kind": [], "sigma": []}
+        self.rho0 = zone.table.material.rho0
+        self.fam = [int(f) for f in zone.family]
+        self.x0, self.t0, self.sp = zone.x0.tolist(), zone.t0.tolist(), zone.speed.tolist()
+        self.seg = list(range(k))
+        self.tag = list(range(k)) if zone.tag is None else [int(x) for x in zone.tag]
+        self.site = [-1] * k
+        for slot, index in zip([i for i, f in enumerate(self.fam) if f == 0],
+                               range(len(zone.sites)), strict=True):
+            self.site[slot] = index
+        self.version = [0] * k
+        self.cell = list(range(k + 1))
+        # records
+        self.seg_x0, self.seg_t0, self.seg_speed = list(self.x0), list(self.t0), list(self.sp)
+        self.seg_family = list(self.fam)
+        self.seg_own = zone.own.tolist()
+        self.seg_left, self.seg_right = list(range(k)), list(range(1, k + 1))
+        self.seg_start, self.seg_tag = [-1] * k, list(self.tag)
+        self.seg_end: dict[int, float] = {}
+        self.cell_end: dict[int, float] = {}
+        self.node_x, self.node_t, self.node_kind, self.node_sigma = [], [], [], []
+        self.chain_cell, self.chain_side, self.chain_node = [], [], []
+        self.cell_t0 = [math.nan] * (k + 1)
+        sites_left, count = [], 0
+        for q in range(k + 1):
+            sites_left.append(count)
+            if q < k and self.fam[q] == 0:
+                count += 1
+        self.cell_sites = sites_left
         self.site_changes = {i: [] for i in range(len(zone.sites))} | {"left": [], "right": []}
+        self.emissions = {"left": [], "right": []}
         self.gaps = {i: (s.width, s.time) for i, s in enumerate(zone.sites) if s.kind == GAP}
         for end in ("left", "right"):
             bc = getattr(zone, end)
             if isinstance(bc, Reflector) and bc.gap is not None:
                 self.gaps[end] = bc.gap[1:]
-        self.exceptions = [(cut, "horizon")]
+        self.gap_version = dict.fromkeys(self.gaps, 0)
         self.tension = [math.inf, None]
-        self.ever = ({0}, {k - 1}) if k else (set(), set())
+        self.stop = (math.inf, "horizon")
+        self.queue: list = []
+        self.seq = 0
         if grid is not None:
-            self.own = np.where(self.fam > 0, grid.p_index(zone.own),
-                                np.where(self.fam < 0, grid.m_index(zone.own), -1))
-            self.pi, self.mi = grid.p_index(zone.jp), grid.m_index(zone.jm)
-            self.cell_p, self.cell_m = [self.pi.copy()], [self.mi.copy()]
-        self.cell_t0 = [np.full(k + 1, np.nan)]
-        self.cell_sites = [np.concatenate([[0], np.cumsum(self.fam == 0)])]
+            self.own = [int(i) for i in np.where(
+                zone.family > 0, grid.p_index(zone.own),
+                np.where(zone.family < 0, grid.m_index(zone.own), -1))]
+            self.pi = grid.p_index(zone.jp).tolist()
+            self.mi = grid.m_index(zone.jm).tolist()
+            self.cell_p, self.cell_m = list(self.pi), list(self.mi)
 
-    # --- records ----------------------------------------------------------------------
-    def _add_nodes(self, x, t, kind, sigma) -> np.ndarray:
-        ids = self.n_node + np.arange(len(x))
-        self.n_node += len(x)
-        for name, values in (("x", x), ("t", t), ("kind", kind), ("sigma", sigma)):
-            self.node[name].append(np.asarray(values, dtype=float if name != "kind" else int))
-        return ids
-
-    def _add_segments(self, **fields) -> np.ndarray:
-        ids = self.n_seg + np.arange(len(fields["x0"]))
-        self.n_seg += len(ids)
-        for name, values in fields.items():
-            self.seg_rec[name].append(np.asarray(values))
-        return ids
-
-    def _add_cells(self, p, m, t, positions) -> np.ndarray:
-        """New cells at slot positions ``positions`` (the cell left of slot ``q`` is at
-        ``q``), with the count of sites to their left (which layer they are in)."""
-        ids = self.n_cell + np.arange(len(p))
-        self.n_cell += len(ids)
-        sites_left = np.concatenate([[0], np.cumsum(self.fam == 0)])
-        self.cell_sites.append(sites_left[np.asarray(positions)])
-        self.cell_p.append(np.asarray(p))
-        self.cell_m.append(np.asarray(m))
-        self.cell_t0.append(np.asarray(t, dtype=float))
-        return ids
-
-    def _chain(self, cells, sides, nodes) -> None:
-        self.chain[0].append(np.asarray(cells))
-        self.chain[1].append(np.asarray(sides))
-        self.chain[2].append(np.asarray(nodes))
-
-    def _note_tension(self, sigma, t, x) -> None:
-        """Keep the first of the states ``sigma`` (made at times ``t``, positions ``x``) in
-        tension beyond the strength outside the carried intervals."""
-        strength = self.zone.strength
-        if not math.isfinite(strength):
+    # --- the queue --------------------------------------------------------------------
+    def _push(self, t: float, kind: str, slot, other=None, single: bool = False) -> None:
+        """Queue an event at ``t`` involving ``slot`` and, unless ``single`` (an event of
+        one slot at an end of the zone), the slot after it."""
+        if t == math.inf:
             return
-        beyond = np.asarray(sigma) <= -strength
-        x = np.asarray(x)
-        for lo, hi in self.zone.carried:
-            beyond &= (x < lo) | (x > hi)
-        beyond = np.nonzero(beyond)[0]
-        if beyond.size:
-            t = np.asarray(t)
-            first = beyond[np.argmin(t[beyond])]
-            if t[first] < self.tension[0]:
-                self.tension = [float(t[first]), (float(x[first]), float(t[first]),
-                                                  float(np.asarray(sigma)[first]))]
+        self.seq += 1
+        stamp = None
+        if isinstance(slot, int):
+            stamp = (self.version[slot],
+                     None if single or slot + 1 >= self.k else self.version[slot + 1])
+        heapq.heappush(self.queue, (t, self.seq, kind, slot, other, stamp))
 
-    # --- the pass -----------------------------------------------------------------------
-    def run(self) -> Lattice:
-        self._open_gaps()
-        limit = min(self.cut, min(e[0] for e in self.exceptions))
-        while self.k:
-            if not self._sweep(limit):
-                break
-            limit = min(limit, min(e[0] for e in self.exceptions))
-        return self._lattice()
-
-    def _sweep(self, limit: float) -> bool:
-        """One parallel sweep of every event before ``limit``; False if there was none."""
-        fam, x0, t0, sp = self.fam, self.x0, self.t0, self.sp
-        pairs = np.nonzero((fam[:-1] > 0) & (fam[1:] < 0))[0]
-        if pairs.size:
-            t_cross = _meet(x0[pairs], t0[pairs], sp[pairs], x0[pairs + 1], t0[pairs + 1],
-                            sp[pairs + 1])
-            ok = t_cross < limit
-            pairs, t_cross = pairs[ok], t_cross[ok]
-        site_events = self._site_events(limit)
-        end_events = self._end_events(limit)
-        if not pairs.size and not site_events and not end_events:
+    def _valid(self, slot, stamp) -> bool:
+        """Whether the slots an event involves are unchanged since it was queued."""
+        if stamp is None:
+            return True
+        if self.version[slot] != stamp[0]:
             return False
-        if pairs.size:
-            self._cross(pairs, t_cross)
-        for t, slot, face in site_events:
-            if face == "pass":
-                self._pass(slot, t)
-            else:
-                self._reflect(slot, t, face)
-        for t, end in end_events:
-            self._reflect(self.k - 1 if end == "right" else 0, t, end)
-        self._note_overtakes(limit)
-        self.ever[0].add(int(self.seg[0]))
-        self.ever[1].add(int(self.seg[-1]))
-        return True
+        return stamp[1] is None or self.version[slot + 1] == stamp[1]
 
-    def _site_events(self, limit: float) -> list:
-        """Rays reaching sites: ``(t, ray slot, "pass" or the face it reflects from)``."""
-        fam, sites = self.fam, self.zone.sites
-        events, used = [], set()
-        for slot in np.nonzero(fam == 0)[0].tolist():
-            site = sites[self.site_of_slot[slot]]
-            arrivals = []
-            if slot > 0 and fam[slot - 1] > 0:
-                arrivals.append((self._arrival(slot - 1, site.x), slot - 1, "left face"))
-            if slot + 1 < self.k and fam[slot + 1] < 0:
-                arrivals.append((self._arrival(slot + 1, site.x), slot + 1, "right face"))
-            arrivals = [a for a in arrivals if a[0] < limit and a[1] not in used]
-            if site.kind == PASS and arrivals:
-                arrivals = [min(arrivals)]  # one passage per site and sweep
-            for t, ray, face in arrivals:
-                used.add(ray)
-                events.append((t, ray, "pass" if site.kind == PASS else face))
-        return events
+    def _schedule_pair(self, j: int) -> None:
+        """The next event of slots ``j`` and ``j + 1``."""
+        if j < 0 or j + 1 >= self.k:
+            return
+        fa, fb = self.fam[j], self.fam[j + 1]
+        if fa > 0 and fb < 0:
+            self._push(self._pair_meet(j), "cross", j)
+        elif fa > 0 and fb == 0:
+            self._push(self._arrival(j, self.zone.sites[self.site[j + 1]].x), "site", j, j)
+        elif fa == 0 and fb < 0:
+            self._push(self._arrival(j + 1, self.zone.sites[self.site[j]].x), "site", j, j + 1)
+        elif fa == fb and fa != 0:
+            self._push(self._pair_meet(j), "stop", j, "overtake")
+
+    def _schedule_end(self, side: str) -> None:
+        """The next event of the slot at an end: a reflection, or meeting the bound."""
+        if not self.k:
+            return
+        slot = 0 if side == "left" else self.k - 1
+        end = getattr(self.zone, side)
+        f = self.fam[slot]
+        if f == 0:
+            return
+        if isinstance(end, Reflector):
+            if (f < 0) == (side == "left"):
+                self._push(self._arrival(slot, end.x), "end", slot, side, single=True)
+            return
+        if side == "left":
+            t = _meet(end.x0, end.t0, end.speed, self.x0[slot], self.t0[slot], self.sp[slot])
+        else:
+            t = _meet(self.x0[slot], self.t0[slot], self.sp[slot], end.x0, end.t0, end.speed)
+        self._push(max(t, self.t0[slot]), "stop", slot, f"{side} bound", single=True)
+
+    def _schedule_around(self, slots) -> None:
+        for j in sorted({s + d for s in slots for d in (-1, 0)}):
+            self._schedule_pair(j)
+        if 0 in slots:
+            self._schedule_end("left")
+        if self.k - 1 in slots:
+            self._schedule_end("right")
+
+    def _pair_meet(self, j: int) -> float:
+        return _meet(self.x0[j], self.t0[j], self.sp[j], self.x0[j + 1], self.t0[j + 1],
+                     self.sp[j + 1])
 
     def _arrival(self, slot: int, x: float) -> float:
         return max(self.t0[slot] + (x - self.x0[slot]) / self.sp[slot], self.t0[slot])
 
-    def _end_events(self, limit: float) -> list:
-        events = []
-        zone, fam = self.zone, self.fam
-        if isinstance(zone.right, Reflector) and fam[-1] > 0:
-            t = self._arrival(self.k - 1, zone.right.x)
-            if t < limit:
-                events.append((t, "right"))
-        if isinstance(zone.left, Reflector) and fam[0] < 0 and not (self.k == 1 and events):
-            t = self._arrival(0, zone.left.x)
-            if t < limit:
-                events.append((t, "left"))
-        return events
+    # --- the pass -----------------------------------------------------------------------
+    def run(self, cut: float) -> Lattice:
+        """Process every event before ``cut`` in time order, up to the first exception."""
+        self._open_gaps()
+        self._schedule_around(set(range(self.k)))
+        while self.queue:
+            t, _, kind, slot, other, stamp = heapq.heappop(self.queue)
+            if t >= min(cut, self.stop[0]):
+                break
+            if not self._valid(slot, stamp):
+                continue
+            if len(self.node_x) >= self.zone.max_nodes:
+                self.stop = (t, "node budget")
+                break
+            if kind == "stop":
+                if isinstance(other, tuple):  # a gap closing, unless its faces moved since
+                    if self.gap_version[slot[1]] != other[1]:
+                        continue
+                    other = other[0]
+                self.stop = (t, other)
+                break
+            if kind == "cross":
+                self._cross(slot, t)
+            elif kind == "site":
+                self._at_site(other, t)
+            else:
+                self._reflect(slot, t, other)
+        if self.stop[0] >= cut:
+            self.stop = (cut, "horizon")
+        return self._lattice()
 
-    def _cross(self, pairs: np.ndarray, t_cross: np.ndarray) -> None:
-        grid, fam, own = self.grid, self.fam, self.own
-        a, b = pairs, pairs + 1
-        xn = self.x0[a] + self.sp[a] * (t_cross - self.t0[a])
-        new_p, new_m = self.pi[a], self.mi[b + 1]  # the left cell's J+, the right cell's J-
-        oa, ob = own[a].copy(), own[b].copy()
-        speed_a, speed_b = grid.c[oa, new_m], -grid.c[new_p, ob]
-        ids = self._add_nodes(xn, t_cross, np.full(pairs.size, CROSSING), grid.sigma[oa, ob])
-        cell = self.cell
-        middle = cell[b]
-        self.cell_end[0].append(middle)
-        self.cell_end[1].append(t_cross)
-        new_cells = self._add_cells(new_p, new_m, t_cross, b)
-        self._chain(np.concatenate([middle, middle, cell[a], cell[b + 1], new_cells, new_cells]),
-                    np.repeat(_CROSSING_SIDES, pairs.size), np.tile(ids, 6))
-        self.seg_end[0].append(np.concatenate([self.seg[a], self.seg[b]]))
-        self.seg_end[1].append(np.concatenate([t_cross, t_cross]))
-        seg_ids = self._add_segments(
-            x0=np.concatenate([xn, xn]), t0=np.concatenate([t_cross, t_cross]),
-            speed=np.concatenate([speed_b, speed_a]), family=np.concatenate(
-                [np.full(pairs.size, -1), np.full(pairs.size, 1)]),
-            own=np.concatenate([grid.m[ob], grid.p[oa]]),
-            left=np.concatenate([cell[a], new_cells]),
-            right=np.concatenate([new_cells, cell[b + 1]]),
-            start=np.concatenate([ids, ids]), tag=np.concatenate([self.tag[b], self.tag[a]]))
-        self.tag[a], self.tag[b] = self.tag[b].copy(), self.tag[a].copy()
-        fam[a], fam[b] = -1, 1
-        own[a], own[b] = ob, oa
-        self.x0[a] = self.x0[b] = xn
-        self.t0[a] = self.t0[b] = t_cross
-        self.sp[a], self.sp[b] = speed_b, speed_a
-        self.seg[a], self.seg[b] = seg_ids[:pairs.size], seg_ids[pairs.size:]
-        cell[b] = new_cells
-        self.pi[b], self.mi[b] = new_p, new_m
-        self._note_tension(grid.sigma[new_p, new_m], t_cross, xn)
-        self._note_tension(grid.sigma[oa, ob], t_cross, xn)
+    # --- records ------------------------------------------------------------------------
+    def _node(self, x: float, t: float, kind: int, sigma: float) -> int:
+        self.node_x.append(x)
+        self.node_t.append(t)
+        self.node_kind.append(kind)
+        self.node_sigma.append(sigma)
+        return len(self.node_x) - 1
 
-    def _pass(self, ray: int, t: float) -> None:
-        """A ray goes through the contact next to it; the cell it leaves behind on the far
-        side has the invariants of the near side's cell."""
-        grid, right_going = self.grid, self.fam[ray] > 0
-        site_slot = ray + 1 if right_going else ray - 1
-        site = self.zone.sites[self.site_of_slot[site_slot]]
-        lo = min(ray, site_slot)  # the pair occupies slots lo, lo + 1
-        near = lo if right_going else lo + 2  # the cell the ray leaves behind
-        new_p, new_m = int(self.pi[near]), int(self.mi[near])
-        (node,) = self._add_nodes([site.x], [t], [PASSAGE], [grid.sigma[new_p, new_m]])
-        cell = self.cell
-        middle = int(cell[lo + 1])
-        self.cell_end[0].append(np.array([middle]))
-        self.cell_end[1].append(np.array([t]))
-        self.seg_end[0].append(np.array([self.seg[ray]]))
-        self.seg_end[1].append(np.array([t]))
-        family, own_value = int(self.fam[ray]), self._own_value(ray)
-        speed = self.sp[ray]
-        # swap the ray and the site
-        for array in (self.fam, self.own, self.tag, self.site_of_slot):
-            array[lo], array[lo + 1] = array[lo + 1], array[lo]
-        self.x0[lo], self.x0[lo + 1] = self.x0[lo + 1], self.x0[lo]
-        self.t0[lo], self.t0[lo + 1] = self.t0[lo + 1], self.t0[lo]
-        self.sp[lo], self.sp[lo + 1] = self.sp[lo + 1], self.sp[lo]
-        self.seg[lo], self.seg[lo + 1] = self.seg[lo + 1], self.seg[lo]
-        (new_cell,) = self._add_cells([new_p], [new_m], [t], [lo + 1])
-        self._chain([middle, middle, cell[lo], cell[lo + 2], new_cell, new_cell],
-                    _CROSSING_SIDES, np.full(6, node))
-        ray = lo + 1 if right_going else lo
-        cell[lo + 1] = new_cell
-        self.pi[lo + 1], self.mi[lo + 1] = new_p, new_m
-        self.x0[ray], self.t0[ray], self.sp[ray] = site.x, t, speed
-        (self.seg[ray],) = self._add_segments(
-            x0=[site.x], t0=[t], speed=[speed], family=[family], own=[own_value],
-            left=[cell[ray]], right=[cell[ray + 1]], start=[node], tag=[self.tag[ray]])
-        # the site's right cell: the new one (a C+ passed) or the far one (a C- passed)
-        index = int(self.site_of_slot[lo if right_going else lo + 1])
-        self.site_changes[index].append((t, int(cell[(lo if right_going else lo + 1) + 1])))
-        sigma = grid.sigma[new_p, new_m]
-        if sigma <= -site.strength:
-            self.exceptions.append((t, "contact opens"))
+    def _new_cell(self, p: int, m: int, t: float, position: int) -> int:
+        self.cell_p.append(p)
+        self.cell_m.append(m)
+        self.cell_t0.append(t)
+        count = sum(1 for q in range(position) if self.fam[q] == 0)
+        self.cell_sites.append(count)
+        return len(self.cell_p) - 1
+
+    def _new_segment(self, slot: int, node: int) -> None:
+        """The slot's line from its last change becomes a new segment starting at ``node``."""
+        self.seg_end[self.seg[slot]] = self.node_t[node]
+        self.seg_x0.append(self.x0[slot])
+        self.seg_t0.append(self.t0[slot])
+        self.seg_speed.append(self.sp[slot])
+        self.seg_family.append(self.fam[slot])
+        self.seg_own.append(self._own_value(slot))
+        self.seg_left.append(self.cell[slot])
+        self.seg_right.append(self.cell[slot + 1])
+        self.seg_start.append(node)
+        self.seg_tag.append(self.tag[slot])
+        self.seg[slot] = len(self.seg_x0) - 1
+        self.version[slot] += 1
+
+    def _chain(self, node: int, pairs) -> None:
+        for cell, side in pairs:
+            self.chain_cell.append(cell)
+            self.chain_side.append(side)
+            self.chain_node.append(node)
 
     def _own_value(self, slot: int) -> float:
-        return float(self.grid.p[self.own[slot]] if self.fam[slot] > 0
-                     else self.grid.m[self.own[slot]])
+        f = self.fam[slot]
+        if f == 0:
+            return math.nan
+        return self.grid.p_list[self.own[slot]] if f > 0 else self.grid.m_list[self.own[slot]]
+
+    def _note_tension(self, sigma: float, t: float, x: float) -> None:
+        """Keep the first state in tension beyond the strength outside the carried intervals."""
+        strength = self.zone.strength
+        if sigma > -strength or t >= self.tension[0]:
+            return
+        if any(lo <= x <= hi for lo, hi in self.zone.carried):
+            return
+        self.tension = [t, (x, t, sigma)]
+
+    # --- nodes ----------------------------------------------------------------------------
+    def _cross(self, j: int, t: float) -> None:
+        """The ``C+`` ray in ``j`` meets the ``C-`` ray in ``j + 1``."""
+        a, b = j, j + 1
+        grid = self.grid
+        x = self.x0[a] + self.sp[a] * (t - self.t0[a])
+        new_p, new_m = self.pi[a], self.mi[b + 1]  # the left cell's J+, the right cell's J-
+        oa, ob = self.own[a], self.own[b]
+        c = grid.rows["c"]
+        speed_a, speed_b = c[oa][new_m], -c[new_p][ob]  # each ray's own new state
+        node = self._node(x, t, CROSSING, grid.rows["sigma"][oa][ob])
+        middle = self.cell[b]
+        self.cell_end[middle] = t
+        new_cell = self._new_cell(new_p, new_m, t, b)
+        self._chain(node, ((middle, 0), (middle, 1), (self.cell[a], 1), (self.cell[b + 1], 0),
+                           (new_cell, 0), (new_cell, 1)))
+        # swap the two rays; each starts a new segment at the node
+        for array in (self.fam, self.own, self.tag):
+            array[a], array[b] = array[b], array[a]
+        self.seg[a], self.seg[b] = self.seg[b], self.seg[a]
+        self.cell[b] = new_cell
+        self.pi[b], self.mi[b] = new_p, new_m
+        self.x0[a] = self.x0[b] = x
+        self.t0[a] = self.t0[b] = t
+        self.sp[a], self.sp[b] = speed_b, speed_a
+        self._new_segment(a, node)
+        self._new_segment(b, node)
+        self._note_tension(grid.rows["sigma"][new_p][new_m], t, x)
+        self._note_tension(grid.rows["sigma"][oa][ob], t, x)
+        self._schedule_around({a, b})
+
+    def _at_site(self, ray: int, t: float) -> None:
+        """A ray reaches the site next to it: it passes a contact, or reflects from a gap
+        face."""
+        right_going = self.fam[ray] > 0
+        site_slot = ray + 1 if right_going else ray - 1
+        site = self.zone.sites[self.site[site_slot]]
+        if site.kind == GAP:
+            self._reflect(ray, t, "left face" if right_going else "right face")
+        else:
+            self._pass(ray, site_slot, site, t)
+
+    def _pass(self, ray: int, site_slot: int, site: Site, t: float) -> None:
+        """A ray goes through a contact; the cell it leaves behind on the far side has the
+        invariants of the near side's cell (the isentrope continues across)."""
+        right_going = self.fam[ray] > 0
+        lo = min(ray, site_slot)  # the pair occupies slots lo, lo + 1
+        near = lo if right_going else lo + 2  # the cell the ray leaves behind
+        new_p, new_m = self.pi[near], self.mi[near]
+        sigma = self.grid.rows["sigma"][new_p][new_m]
+        if sigma <= -site.strength:
+            self.stop = (t, "contact opens")
+            return
+        node = self._node(site.x, t, PASSAGE, sigma)
+        middle = self.cell[lo + 1]
+        self.cell_end[middle] = t
+        for array in (self.fam, self.own, self.tag, self.site, self.seg):
+            array[lo], array[lo + 1] = array[lo + 1], array[lo]
+        for array in (self.x0, self.t0, self.sp, self.version):
+            array[lo], array[lo + 1] = array[lo + 1], array[lo]
+        new_cell = self._new_cell(new_p, new_m, t, lo + 1)
+        self._chain(node, ((middle, 0), (middle, 1), (self.cell[lo], 1), (self.cell[lo + 2], 0),
+                           (new_cell, 0), (new_cell, 1)))
+        ray = lo + 1 if right_going else lo
+        self.cell[lo + 1] = new_cell
+        self.pi[lo + 1], self.mi[lo + 1] = new_p, new_m
+        self.x0[ray], self.t0[ray] = site.x, t
+        self._new_segment(ray, node)
+        site_now = lo if right_going else lo + 1
+        self.version[site_now] += 1
+        index = self.site[site_now]
+        # the site's right cell: the new one (a C+ passed) or the far one (a C- passed)
+        self.site_changes[index].append((t, self.cell[site_now + 1]))
+        self._schedule_around({lo, lo + 1})
 
     def _reflect(self, ray: int, t: float, where: str) -> None:
         """The ray in ``ray`` reflects at an end (``"left"``/``"right"``) or a gap face
@@ -566,47 +556,74 @@ class _Sweeper:
         right_going = self.fam[ray] > 0
         if where in ("left", "right"):
             end = getattr(zone, where)
-            condition, x = (end.holds, end.value), end.x
+            condition = ("join", where) if end.join is not None else (end.holds, end.value)
+            x = end.x
         else:
             site_slot = ray + 1 if right_going else ray - 1
-            condition, x = ("stress", 0.0), zone.sites[self.site_of_slot[site_slot]].x
+            condition, x = ("stress", 0.0), zone.sites[self.site[site_slot]].x
         face = ray + 1 if right_going else ray  # the cell at the boundary
         came_from = ray if right_going else ray + 1
+        to = -1 if right_going else +1
+        table = grid.maps[(to, condition)]
         if right_going:
-            new_p = int(self.pi[came_from])
-            new_m = int(grid.maps[(-1, condition)][new_p])
-            refl = int(grid.maps[(-1, condition)][self.own[ray]])
-            p_node, m_node = int(self.own[ray]), refl
+            new_p = self.pi[came_from]
+            new_m, refl = table[new_p], table[self.own[ray]]
+            p_node, m_node = self.own[ray], refl
         else:
-            new_m = int(self.mi[came_from])
-            new_p = int(grid.maps[(+1, condition)][new_m])
-            refl = int(grid.maps[(+1, condition)][self.own[ray]])
-            p_node, m_node = refl, int(self.own[ray])
+            new_m = self.mi[came_from]
+            new_p, refl = table[new_m], table[self.own[ray]]
+            p_node, m_node = refl, self.own[ray]
         if min(new_p, new_m, refl) < 0:
-            self.exceptions.append((t, "reflections beyond the tabulated grid"))
+            self.stop = (t, "reflections beyond the tabulated grid")
             return
+        if condition[0] == "join" and not self._emit(where, (to, condition), t, x,
+                                                     self.own[ray],
+                                                     new_p if right_going else new_m):
+            return
+        sigma, c = grid.rows["sigma"], grid.rows["c"]
         kind = RIGHT_REFLECTION if right_going else LEFT_REFLECTION
-        (node,) = self._add_nodes([x], [t], [kind], [grid.sigma[p_node, m_node]])
-        cell = self.cell
-        old, other = int(cell[face]), int(cell[came_from])
-        self.cell_end[0].append(np.array([old]))
-        self.cell_end[1].append(np.array([t]))
-        (new_cell,) = self._add_cells([new_p], [new_m], [t], [face])
-        self._chain([old, old, other, new_cell, new_cell],
-                    [0, 1, 1 if right_going else 0, 0, 1], np.full(5, node))
-        self.seg_end[0].append(np.array([self.seg[ray]]))
-        self.seg_end[1].append(np.array([t]))
-        self.fam[ray], self.own[ray] = (-1, refl) if right_going else (1, refl)
-        speed = -grid.c[new_p, refl] if right_going else grid.c[refl, new_m]
-        self.x0[ray], self.t0[ray], self.sp[ray] = x, t, speed
-        cell[face] = new_cell
+        node = self._node(x, t, kind, sigma[p_node][m_node])
+        old, other = self.cell[face], self.cell[came_from]
+        self.cell_end[old] = t
+        new_cell = self._new_cell(new_p, new_m, t, face)
+        self._chain(node, ((old, 0), (old, 1), (other, 1 if right_going else 0),
+                           (new_cell, 0), (new_cell, 1)))
+        self.cell[face] = new_cell
         self.pi[face], self.mi[face] = new_p, new_m
-        (self.seg[ray],) = self._add_segments(
-            x0=[x], t0=[t], speed=[speed], family=[int(self.fam[ray])],
-            own=[self._own_value(ray)], left=[cell[ray]], right=[cell[ray + 1]],
-            start=[node], tag=[self.tag[ray]])
-        self._note_tension([grid.sigma[new_p, new_m]], [t], [x])
+        # the reflected ray moves at the characteristic speed of its own state
+        speed = -c[new_p][refl] if right_going else c[refl][new_m]
+        self.fam[ray], self.own[ray] = (-1, refl) if right_going else (1, refl)
+        self.x0[ray], self.t0[ray], self.sp[ray] = x, t, speed
+        self._new_segment(ray, node)
+        self._note_tension(sigma[new_p][new_m], t, x)
         self._face_moved(ray, t, where, new_cell)
+        self._schedule_around({ray, face - 1 if not right_going else ray})
+
+    def _emit(self, end: str, key, t: float, x: float, arriving: int, source: int) -> bool:
+        """A ray goes through the contact at ``end``: what it sends into the far side (its
+        own invariant there and speed, and the far cell behind it).  False if the contact
+        does not hold (then the zone stops there)."""
+        sigma, far, speed = self.grid.emitted[key]
+        join = getattr(self.zone, end).join
+        if not min(sigma[arriving], sigma[source]) > -join.strength:
+            self.stop = (t, "contact opens")
+            return False
+        sign = 1.0 if end == "right" else -1.0
+        rows = self.emissions[end]
+        rows.append((t, x, far[arriving], sign * speed[arriving], far[source]))
+        b = join.bound
+        if b is not None:  # the ray must not reach the far side's front inside the zone
+            s = sign * speed[arriving]
+            meet = (_meet(x, t, s, b.x0, b.t0, b.speed) if end == "right"
+                    else _meet(b.x0, b.t0, b.speed, x, t, s))
+            self._push(meet, "stop", end, "far bound")
+        if len(rows) > 1:  # nor the ray it follows
+            t0, x0_, _, s0, _ = rows[-2]
+            s = sign * speed[arriving]
+            meet = (_meet(x, t, s, x0_, t0, s0) if end == "right"
+                    else _meet(x0_, t0, s0, x, t, s))
+            self._push(meet, "stop", end, "far overtake")
+        return True
 
     def _face_moved(self, ray: int, t: float, where: str, new_cell: int) -> None:
         """Record the new cell at an end or a face; follow a gap's width to its closing."""
@@ -615,7 +632,7 @@ class _Sweeper:
         if where in ("left face", "right face"):
             # the ray has just reflected: from the left face it now goes left
             site_slot = ray + 1 if self.fam[ray] < 0 else ray - 1
-            index = int(self.site_of_slot[site_slot])
+            index = self.site[site_slot]
             if where == "right face":
                 self.site_changes[index].append((t, new_cell))
             self._gap_moved(index, t)
@@ -625,14 +642,15 @@ class _Sweeper:
     def _face_u(self, key, side: str) -> float:
         """Velocity (m/s) of a gap's face now: the cell at it, or the other side's face of
         a gap at an end of the zone."""
+        u = self.grid.rows["u"]
         if key in ("left", "right"):
             if side != key:  # the face inside the zone
-                cell = 0 if key == "left" else self.k
-                return float(self.grid.u[self.pi[cell], self.mi[cell]])
+                q = 0 if key == "left" else self.k
+                return u[self.pi[q]][self.mi[q]]
             return getattr(self.zone, key).gap[0]
-        slot = int(np.nonzero(self.site_of_slot == key)[0][0])
-        cell = slot if side == "left" else slot + 1
-        return float(self.grid.u[self.pi[cell], self.mi[cell]])
+        slot = self.site.index(key)
+        q = slot if side == "left" else slot + 1
+        return u[self.pi[q]][self.mi[q]]
 
     def _open_gaps(self) -> None:
         """Each gap's face velocities at the start, and when it closes if they stay."""
@@ -648,84 +666,72 @@ class _Sweeper:
         width += (u_right - u_left) * (t - since)
         self.gaps[key] = (width, t)
         self.faces[key] = (self._face_u(key, "left"), self._face_u(key, "right"))
+        self.gap_version[key] += 1
         self._note_closing(key, width, t)
 
     def _note_closing(self, key, width: float, since: float) -> None:
         u_left, u_right = self.faces[key]
         if u_left > u_right:
-            self.exceptions.append((since + max(width, 0.0) / (u_left - u_right),
-                                    "gap closes"))
+            self._push(since + max(width, 0.0) / (u_left - u_right), "stop", ("gap", key),
+                       ("gap closes", self.gap_version[key]))
 
-    def _note_overtakes(self, limit: float) -> None:
-        """Two adjacent rays of one family converging: a compression steepening."""
-        fam = self.fam
-        same = np.nonzero((fam[:-1] == fam[1:]) & (fam[:-1] != 0))[0]
-        if same.size:
-            t_meet = _meet(self.x0[same], self.t0[same], self.sp[same], self.x0[same + 1],
-                           self.t0[same + 1], self.sp[same + 1])
-            first = float(np.min(t_meet))
-            if first < limit:
-                self.exceptions.append((first, "overtake"))
-
+    # --- the result -----------------------------------------------------------------------
     def unchanged(self, reason: str) -> Lattice:
         """The zone as it was: nothing could be solved."""
-        out = self._lattice(states=False)
-        out.cut, out.reason = self.zone.t_now, reason
-        return out
+        self.stop = (self.zone.t_now, reason)
+        return self._lattice(states=False)
 
     def _lattice(self, states: bool = True) -> Lattice:
         out = Lattice()
-        out.nodes = self.n_node
-        if self.n_node:
-            out.node_x, out.node_t, out.node_kind, out.node_sigma = (
-                np.concatenate(self.node[name]) for name in ("x", "t", "kind", "sigma"))
-        for name, parts in self.seg_rec.items():
-            setattr(out, f"seg_{name}", np.concatenate(parts))
-        out.seg_t1 = _ends(self.n_seg, self.seg_end)
+        out.nodes = len(self.node_x)
+        if out.nodes:
+            out.node_x = np.array(self.node_x)
+            out.node_t = np.array(self.node_t)
+            out.node_kind = np.array(self.node_kind, dtype=int)
+            out.node_sigma = np.array(self.node_sigma)
+        for name in ("x0", "t0", "speed", "own"):
+            setattr(out, f"seg_{name}", np.array(getattr(self, f"seg_{name}"), dtype=float))
+        for name in ("family", "left", "right", "start", "tag"):
+            setattr(out, f"seg_{name}", np.array(getattr(self, f"seg_{name}"), dtype=int))
+        out.seg_t1 = np.full(len(self.seg_x0), np.nan)
+        if self.seg_end:
+            out.seg_t1[list(self.seg_end)] = list(self.seg_end.values())
         if states:
             grid = self.grid
-            p_all, m_all = np.concatenate(self.cell_p), np.concatenate(self.cell_m)
+            p_all, m_all = np.array(self.cell_p, dtype=int), np.array(self.cell_m, dtype=int)
             out.cell_sigma, out.cell_u = grid.sigma[p_all, m_all], grid.u[p_all, m_all]
             out.cell_v, out.cell_e = grid.v[p_all, m_all], grid.e[p_all, m_all]
             out.cell_jp, out.cell_jm = grid.p[p_all], grid.m[m_all]
-        out.cell_t0 = np.concatenate(self.cell_t0)
-        out.cell_t1 = _ends(self.n_cell, self.cell_end)
-        out.cell_sites = np.concatenate(self.cell_sites).astype(int)
-        if self.chain[0]:
-            out.chain_cell, out.chain_side, out.chain_node = (
-                np.concatenate(part).astype(int) for part in self.chain)
-        else:
-            out.chain_cell = out.chain_side = out.chain_node = np.empty(0, dtype=int)
-        out.live_segments, out.live_cells = self.seg.copy(), self.cell.copy()
+        out.cell_t0 = np.array(self.cell_t0, dtype=float)
+        out.cell_t1 = np.full(len(self.cell_t0), np.nan)
+        if self.cell_end:
+            out.cell_t1[list(self.cell_end)] = list(self.cell_end.values())
+        out.cell_sites = np.array(self.cell_sites, dtype=int)
+        out.chain_cell = np.array(self.chain_cell, dtype=int)
+        out.chain_side = np.array(self.chain_side, dtype=int)
+        out.chain_node = np.array(self.chain_node, dtype=int)
+        out.live_segments = np.array(self.seg, dtype=int)
+        out.live_cells = np.array(self.cell, dtype=int)
         out.site_changes, out.gaps = self.site_changes, self.gaps
-        self._note_bounds(out)
-        when, why = min(self.exceptions, key=lambda item: item[0])
-        out.cut, out.reason = when, why
+        out.emitted = self._emitted() if states else {}
+        out.cut, out.reason = self.stop
         out.tension_at, out.tension_sample = self.tension
         return out
 
-    def _note_bounds(self, out: Lattice) -> None:
-        """The first time a segment that was ever at an open end meets the front there."""
-        for end, ids in (("left", self.ever[0]), ("right", self.ever[1])):
-            bound = getattr(self.zone, end)
-            if not isinstance(bound, Bound) or not ids:
+    def _emitted(self) -> dict:
+        """The rays each join sent into its far side, as arrays (each at the characteristic
+        speed of its own state), with the far cells behind them."""
+        out = {}
+        for end, rows in self.emissions.items():
+            if not rows:
                 continue
-            idx = np.fromiter(ids, int, len(ids))
-            idx = idx[out.seg_family[idx] != 0]
-            if not idx.size:
-                continue
-            x0, t0, s = out.seg_x0[idx], out.seg_t0[idx], out.seg_speed[idx]
-            t1 = np.where(np.isnan(out.seg_t1[idx]), np.inf, out.seg_t1[idx])
-            line = (np.full(idx.size, bound.x0), np.full(idx.size, bound.t0),
-                    np.full(idx.size, bound.speed))
-            t = _meet(*line, x0, t0, s) if end == "left" else _meet(x0, t0, s, *line)
-            valid = (t >= t0) & (t <= t1)
-            if np.any(valid):
-                self.exceptions.append((float(np.min(t[valid])), f"{end} bound"))
-
-
-def _ends(count: int, ends) -> np.ndarray:
-    t1 = np.full(count, np.nan)
-    if ends[0]:
-        t1[np.concatenate(ends[0])] = np.concatenate(ends[1])
-    return t1
+            join = getattr(self.zone, end).join
+            t, x, own, speed, cell = (np.array(column) for column in zip(*rows, strict=True))
+            if end == "right":
+                jp, jm = cell, np.full(cell.size, join.invariant)
+            else:
+                jp, jm = np.full(cell.size, join.invariant), cell
+            sigma, v, e, _ = join.table.arrays_at_phi(0.5 * (jp - jm))
+            out[end] = {"t": t, "x": x, "own": own, "speed": speed, "jp": jp, "jm": jm,
+                        "sigma": sigma, "u": 0.5 * (jp + jm), "v": v, "e": e}
+        return out

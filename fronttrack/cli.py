@@ -24,8 +24,8 @@ from materials import MaterialError, NoSolutionError, StateOutOfRangeError, libr
 
 from .damage import FractureLimitError
 from .engine import EventLimitError
-from .runner import run
 from .impedance_match import format_table, impedance_match, to_json_dict
+from .runner import run
 from .scene import SceneError
 from .scene_file import load_scene
 from .units import parse_quantity

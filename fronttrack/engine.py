@@ -34,7 +34,7 @@ from materials import State
 from . import interactions, outgoing, spall, zones
 from .counters import Counters
 from .fronts import UNKNOWN, Front, Region, inside_fan
-from .kinds import EventKind, FrontKind, Release
+from .kinds import FrontKind, Release
 from .resolution import Resolution, initial_state, resolve
 from .scene import Scene
 from .solution import EventRecord, Solution
@@ -81,6 +81,7 @@ class Engine:
         self.initial_states = [initial_state(layer) for layer in scene.layers]
         self.resolution: Resolution = resolve(scene, self.initial_states)
         self.tables = IsentropeTables(self.resolution.negligible)
+        self.signal_speed = signal_speed(scene, self.resolution.stress_scale)
         self.head: Front | None = None
 
     # --- ids and objects ------------------------------------------------------------
@@ -185,6 +186,45 @@ class Engine:
         if left > right:
             self.push_site(gap, gap.gap_time + gap.gap_width / (left - right))
 
+    def causal_horizon(self, left: tuple[float, float], right: tuple[float, float],
+                       members: set[int], now: float, limit: float) -> float:
+        """The first time an event pending outside ``members`` could reach a region that
+        spans, from ``now``, from the line ``left`` to the line ``right`` (each
+        ``(X at now, speed)``, m and m/s): no signal outruns ``signal_speed``, so an event
+        at ``(x_e, t_e)`` left of the region reaches it when
+        ``x_e + C (t - t_e) = X_left + s_left (t - now)``.  A region of the method of
+        characteristics may be solved ahead of the queue up to this time."""
+        c = self.signal_speed
+        best = limit
+        for entry in self._heap:
+            t_e = entry[0]
+            if t_e >= best:
+                continue
+            kind = entry[3]
+            if kind == "pair":
+                a, b = entry[4], entry[5]
+                if not (a.alive and b.alive and a.next is b) or (
+                        id(a) in members and id(b) in members):
+                    continue
+                x_e = a.position(t_e)
+            elif kind == "site":
+                front = entry[4]
+                if not front.alive or entry[5] != front.gap_version or id(front) in members:
+                    continue
+                x_e = front.x0
+            else:
+                x_e = entry[4].x
+            (x_l, s_l), (x_r, s_r) = left, right
+            at_left, at_right = x_l + s_l * (t_e - now), x_r + s_r * (t_e - now)
+            if x_e < at_left:
+                reach = t_e + (at_left - x_e) / (c - s_l)
+            elif x_e > at_right:
+                reach = t_e + (x_e - at_right) / (c + s_r)
+            else:
+                reach = t_e
+            best = min(best, reach)
+        return best
+
     def next_event_time(self, front: Front) -> float:
         """The earliest time ``front`` would meet its left neighbour, or its own timer
         (a boundary step, a gap closing): the front is unchanged until then."""
@@ -247,6 +287,7 @@ class Engine:
                 raise EventLimitError(
                     f"accuracy.max_events: the scene needed more than {self.acc.max_events} "
                     f"events before t = {t * 1e6:.6g} us (t_end = {self.t_end * 1e6:.6g} us); "
+                    f"(a lattice's {zones.NODES_PER_EVENT} nodes count as one event); "
                     f"raise max_events, shorten t_end or loosen the accuracy")
             self._process(seed, t, x, timer=kind == "site")
             if self.progress is not None and counters.events % 1000 == 0:
@@ -459,6 +500,31 @@ class Engine:
                 region.right_points.append((front.next.position(t), t))
                 region.t_end = t
             front = front.next
+
+
+SIGNAL_MARGIN = 1.25
+"""The fastest signal of a scene is taken as this factor times the largest sound speed
+behind a shock of twice its stress scale (a bound, used to order lattices with the
+queue: ``Engine.causal_horizon``)."""
+
+
+def signal_speed(scene: Scene, stress_scale: float) -> float:
+    """A speed (m/s) no wave of the scene exceeds (``SIGNAL_MARGIN`` of the largest sound
+    speed, in any layer, behind a shock to twice the stress scale)."""
+    fastest = 0.0
+    for layer in scene.layers:
+        material = layer.material
+        reference = material.reference_state()
+        curve = material.wave_curve(reference, 1, "hugoniot")
+        top = min(2.0 * stress_scale, curve.sigma_max())
+        try:
+            state = curve.state_at(top)
+            fastest = max(fastest, material.sound_speed(state.v, state.e),
+                          material.sound_speed(reference.v, reference.e))
+        except ValueError:
+            fastest = max(fastest, material.sound_speed(reference.v, reference.e))
+        fastest = max(fastest, getattr(material, "C0", 0.0))
+    return SIGNAL_MARGIN * fastest
 
 
 def _contact_within(group, x: float, distance: float) -> bool:

@@ -14,8 +14,6 @@ from __future__ import annotations
 
 import dataclasses
 
-import numpy as np
-
 from .engine import Engine
 
 RICHARDSON_SECOND_ORDER = 4.0 / 3.0

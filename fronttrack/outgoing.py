@@ -1,9 +1,10 @@
 """The waves a Riemann problem sends out, as fronts of the queue.
 
-A shock is one front.  A simple wave (fan) is a family of characteristics
-(``characteristics.simple_waves``): one ray per characteristic, each with its own
-Riemann invariant, the cells between them on the fan's isentrope.  A family weaker
-than the negligible stress is dropped and counted.
+A shock is one front; a shock weaker than the characteristic step is a compression
+characteristic (``_weak_shock_ray``).  A simple wave (fan) is a family of
+characteristics (``characteristics.simple_waves``): one ray per characteristic, each
+with its own Riemann invariant, the cells between them on the fan's isentrope.  A
+family weaker than the negligible stress is dropped and counted.
 """
 
 from __future__ import annotations
@@ -49,6 +50,10 @@ def wave_fronts(engine, waves, material, t: float, x: float, incoming,
     for wave in waves:
         if isinstance(wave, Fan):
             specs += _fan_fronts(engine, wave, material, t, x, parent, direction)
+            continue
+        ray = _weak_shock_ray(engine, wave, material, t, x, parent, direction)
+        if ray is not None:
+            specs.append(ray)
         else:
             wave_id = (parent.wave if parent is not None and parent.kind == FrontKind.SHOCK
                        else engine.next_wave_id())
@@ -57,6 +62,36 @@ def wave_fronts(engine, waves, material, t: float, x: float, incoming,
                                      jump=wave.behind.sigma - wave.ahead.sigma)
             specs.append(WaveSpec(front, wave.ahead, wave.behind, UNKNOWN))
     return specs
+
+
+def _weak_shock_ray(engine, shock, material, t, x, parent, direction) -> WaveSpec | None:
+    """A shock weaker than the characteristic step, as a compression characteristic.
+
+    At the resolution of the run it cannot be told from a compression wave: its entropy
+    jump is third order in its strength, below the tolerance within which states share
+    an isentrope table.  As a ray it joins the lattices of the fans around it instead
+    of meeting each of their rays in a Riemann problem; compression rays that converge
+    form a shock again where they meet.  ``None`` if the shock is stronger than the
+    step, or its states have no common table.
+    """
+    res = engine.resolution
+    if res.release != "isentrope" or abs(shock.behind.sigma - shock.ahead.sigma) > res.step:
+        return None
+    table = engine.tables.table(material, shock.ahead)
+    if table is None or not table.matches(shock.behind, engine.tables.tolerance):
+        return None
+    ahead, behind = table.invariants(shock.ahead), table.invariants(shock.behind)
+    if not table.resolves(abs(ahead[0] - behind[0]) + abs(ahead[1] - behind[1])):
+        return None
+    middle = (0.5 * (ahead[0] + behind[0]), 0.5 * (ahead[1] + behind[1]))
+    fan_id = parent.fan if parent is not None and parent.kind == FrontKind.RAY else \
+        engine.next_wave_id()
+    speed = direction * table.speed(*middle)
+    front = engine.new_front(FrontKind.RAY, x, t, speed=speed,
+                             fan=fan_id, ray_count=1, direction=direction,
+                             jump=shock.behind.sigma - shock.ahead.sigma,
+                             invariant=middle[0 if direction > 0 else 1])
+    return WaveSpec(front, shock.ahead, shock.behind, table)
 
 
 def _fan_fronts(engine, fan: Fan, material, t, x, parent, direction) -> list[WaveSpec]:

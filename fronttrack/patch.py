@@ -23,7 +23,8 @@ from .kinds import FrontKind
 class LatticePatch:
     """Segments and cells that began and ended inside one lattice (SI units).
 
-    ``layers``: the layer of each cell.  Segments: ``seg_id``, ``seg_x0``, ``seg_t0``, ``seg_t1``, ``seg_speed``,
+    ``layers``: the layer of each cell.  Segments: ``seg_id``, ``seg_x0``, ``seg_t0``,
+    ``seg_t1``, ``seg_speed``,
     ``seg_direction``, ``seg_invariant``, ``seg_fan``, ``seg_ray_index``,
     ``seg_ray_count``, ``seg_left``/``seg_right`` (region ids), ``seg_jump`` (Pa).
     Cells: ``cell_id``, the state arrays, ``cell_t0``/``cell_t1``, and their boundary

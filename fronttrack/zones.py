@@ -38,6 +38,17 @@ from .kinds import BoundaryKind, EventKind, FrontKind
 from .patch import LatticePatch
 from .solution import EventRecord
 
+MIN_ZONE_RAYS = 6
+"""Rays a zone needs before it is solved as a lattice: building a lattice's grid of
+states costs about as much as ten Riemann solves (measured on random stacks), so a
+few rays meeting go through the queue, one solve per meeting."""
+
+
+NODES_PER_EVENT = 50
+"""Nodes of a lattice that count as one event against ``accuracy.max_events`` (a node
+costs about a fiftieth of a Riemann solve): a zone whose rays ring in a thin layer
+cannot run without bound."""
+
 
 @dataclass
 class _Run:
@@ -57,6 +68,8 @@ def try_zone(engine, group: list[Front], t: float) -> bool:
     if table is None:
         return False
     run = _collect(engine, group, table)
+    if sum(1 for f in run.slots if f.kind == FrontKind.RAY) < MIN_ZONE_RAYS:
+        return False  # a few rays: one Riemann solve each costs less than a lattice
     zone = _zone(engine, run, t)
     if not table.resolves(max(np.ptp(zone.jp), np.ptp(zone.jm))):
         return False  # waves too weak for the table's rounding: the Riemann solver's
@@ -86,9 +99,19 @@ def _eligible(engine, group: list[Front]):
         return None
     cells = {id(c): c for c in _ray_cells(rays)}
     table = engine.table_of(next(iter(cells.values())))
-    if table is None or any(engine.table_of(c) is not table for c in cells.values()):
+    if table is None or not all(_on(engine, c, table) for c in cells.values()):
         return None
     return table
+
+
+def _on(engine, region: Region | None, table) -> bool:
+    """Whether ``region`` lies on ``table``'s isentrope: its own table, or one within the
+    tolerance of the run's tables (a nearby isentrope it would share a table with)."""
+    if region is None or region.material is not table.material:
+        return False
+    own = engine.table_of(region)
+    return own is table or (own is not None
+                            and table.matches(region.state, engine.tables.tolerance))
 
 
 def _ray_cells(rays: list[Front]) -> list[Region]:
@@ -103,13 +126,19 @@ def _ray_cells(rays: list[Front]) -> list[Region]:
 
 def _handles(engine, site: Front, group: list[Front]) -> bool:
     """A site at which the lattice takes the rays: a boundary of the stack (rays arriving
-    at it), a gap, or a contact between two layers or states that the isentrope crosses
-    (``_passes``)."""
+    at it), a gap, a contact that the isentrope crosses (``_passes``), or a contact to
+    another isentrope table (a join: the rays arrive from one side)."""
     if site.kind == FrontKind.BOUNDARY:
         return (site is group[-1]) if site.side == "right" else (site is group[0])
-    if site.kind == FrontKind.GAP:
+    if site.kind == FrontKind.GAP or _passes(engine, site):
         return True
-    return _passes(engine, site)
+    if site.kind not in (FrontKind.INTERFACE, FrontKind.CONTACT):
+        return False
+    side = "right" if site is group[-1] else "left" if site is group[0] else None
+    if side is None:
+        return False
+    far = site.region_right if side == "right" else site.prev.region_right
+    return far is not None and engine.table_of(far) is not None
 
 
 def _passes(engine, site: Front) -> bool:
@@ -117,8 +146,8 @@ def _passes(engine, site: Front) -> bool:
     if site.kind not in (FrontKind.INTERFACE, FrontKind.CONTACT) or site.prev is None:
         return False
     left, right = site.prev.region_right, site.region_right
-    return right is not None and engine.table_of(left) is not None \
-        and engine.table_of(left) is engine.table_of(right)
+    table = engine.table_of(left) if left is not None else None
+    return table is not None and _on(engine, right, table)
 
 
 def _collect(engine, group: list[Front], table) -> _Run:
@@ -142,9 +171,9 @@ def _inside(engine, front: Front, table) -> bool:
     or a gap with both faces on it."""
     if front.kind == FrontKind.GAP:
         return (front.prev is not None and front.region_right is not None
-                and engine.table_of(front.prev.region_right) is table
-                and engine.table_of(front.region_right) is table)
-    return _passes(engine, front) and engine.table_of(front.region_right) is table
+                and _on(engine, front.prev.region_right, table)
+                and _on(engine, front.region_right, table))
+    return _passes(engine, front) and _on(engine, front.region_right, table)
 
 
 def _joins(engine, front: Front, table, side: str) -> bool:
@@ -153,19 +182,23 @@ def _joins(engine, front: Front, table, side: str) -> bool:
         if math.isnan(front.invariant):
             return False
         far = front.prev.region_right if side == "left" else front.region_right
-        return far is not None and engine.table_of(far) is table
+        return _on(engine, far, table)
     return _inside(engine, front, table)
 
 
 def _zone(engine, run: _Run, t: float) -> moc.Zone:
     """The lattice input for a run at time ``t``."""
-    invariants = [engine.invariants_of(c) for c in run.cells]
+    invariants = [engine.invariants_of(c) if c.table is run.table
+                  else run.table.invariants(c.state) for c in run.cells]
     material = run.cells[0].material
     strength = (material.spall_strength if engine.scene.spall_criterion is None
                 else math.inf)
-    left, left_horizon = _end(engine, run.left_end, "left", t)
-    right, right_horizon = _end(engine, run.right_end, "right", t)
+    left, left_horizon = _end(engine, run.left_end, "left", t, run.table)
+    right, right_horizon = _end(engine, run.right_end, "right", t, run.table)
     horizon = min(engine.t_end, left_horizon, right_horizon, spall.next_scheduled(engine, t))
+    members = {id(f) for f in run.slots} | {id(run.left_end), id(run.right_end)}
+    horizon = engine.causal_horizon(_reach(run.left_end, left, t), _reach(run.right_end, right, t),
+                                    members, t, horizon)
     sites, carried = [], []
     for front in run.slots:
         if front.kind == FrontKind.RAY:
@@ -184,15 +217,82 @@ def _zone(engine, run: _Run, t: float) -> moc.Zone:
         table=run.table,
         family=np.array([f.direction if f.kind == FrontKind.RAY else 0 for f in rays],
                         dtype=np.int8),
-        own=np.array([f.invariant if f.kind == FrontKind.RAY else math.nan for f in rays]),
+        own=np.array([_own_invariant(engine, run, i, invariants) for i in range(len(rays))]),
         x0=np.array([f.x0 for f in rays]), t0=np.array([f.t0 for f in rays]),
         speed=np.array([f.speed for f in rays]),
         jp=np.array([j[0] for j in invariants]), jm=np.array([j[1] for j in invariants]),
         left=left, right=right, t_now=t, horizon=horizon, strength=strength,
-        carried=tuple(carried), sites=tuple(sites))
+        carried=tuple(carried), sites=tuple(sites),
+        max_nodes=NODES_PER_EVENT * max(engine.acc.max_events - engine.counters.events, 1))
 
 
-def _end(engine, front: Front, side: str, t: float):
+def _own_invariant(engine, run: _Run, i: int, invariants: list) -> float:
+    """The invariant of the ray in slot ``i`` on the run's table (NaN for a site).
+
+    Each table measures ``phi`` from its own labelling state, so a ray born on a nearby
+    isentrope's table carries its invariant in that table's gauge: it is shifted by
+    the offset between the two gauges at the cell beside it that has another table
+    (the isentropes agree within the tolerance, so the offset is constant to it).  A
+    ray's state lies between those of the cells beside it; an invariant that does not
+    (a ray whose own table is neither cell's) is replaced by the cells' mean, which is
+    its state to second order in the ray's step.
+    """
+    ray = run.slots[i]
+    if ray.kind != FrontKind.RAY:
+        return math.nan
+    family = 0 if ray.direction > 0 else 1
+    own = ray.invariant
+    for cell, here in ((run.cells[i], invariants[i]), (run.cells[i + 1], invariants[i + 1])):
+        if cell.table is not run.table and cell.table is not None:
+            own += here[family] - engine.invariants_of(cell)[family]
+            break
+    left, right = invariants[i][family], invariants[i + 1][family]
+    slack = 1e-9 * (abs(left) + abs(right) + abs(left - right))
+    if not min(left, right) - slack <= own <= max(left, right) + slack:
+        return 0.5 * (left + right)
+    return own
+
+
+def _reach(front: Front, end, t: float) -> tuple[float, float]:
+    """How far a zone reaches on one side: the end's line ``(X at t, speed)``, or for a join
+    the line of the front bounding the far cell, into which the zone sends rays."""
+    if isinstance(end, moc.Reflector) and end.join is not None and end.join.bound is not None:
+        bound = end.join.bound
+        return bound.x0 + bound.speed * (t - bound.t0), bound.speed
+    return front.position(t), front.speed
+
+
+def _meeting(outer: Front | None, front: Front, side: str, t: float) -> float:
+    """When ``outer`` (beyond ``front`` on ``side``) would meet ``front`` (inf if never)."""
+    if outer is None:
+        return math.inf
+    a, b = (outer, front) if side == "left" else (front, outer)
+    closing = a.speed - b.speed
+    if closing <= 0.0:
+        return math.inf
+    return t + max(b.position(t) - a.position(t), 0.0) / closing
+
+
+def _join(engine, front: Front, side: str, table, t: float) -> moc.Join | None:
+    """The far side of a contact ending a zone on ``side``, when it lies on another
+    isentrope table (rays then pass the contact by the contact node)."""
+    if front.kind not in (FrontKind.INTERFACE, FrontKind.CONTACT):
+        return None
+    far = front.prev.region_right if side == "left" else front.region_right
+    outer = front.prev if side == "left" else front.next
+    if far is None or outer is None:
+        return None
+    far_table = engine.table_of(far)
+    if far_table is None or _on(engine, far, table):
+        return None
+    jp, jm = engine.invariants_of(far)
+    return moc.Join(table=far_table, invariant=jp if side == "left" else jm,
+                    strength=interactions.contact_strength(engine, front, far.material),
+                    stress=far.state.sigma,
+                    bound=moc.Bound(outer.x0, outer.t0, outer.speed))
+
+
+def _end(engine, front: Front, side: str, t: float, table):
     """The zone's end at ``front``: a ``Reflector`` or a ``Bound``, and the time until which
     the end stays as it is."""
     if front.kind == FrontKind.BOUNDARY:
@@ -201,12 +301,14 @@ def _end(engine, front: Front, side: str, t: float):
         holds = "stress" if spec.kind in (BoundaryKind.FREE, BoundaryKind.STRESS) else "velocity"
         return moc.Reflector(front.x0, holds, value), interactions.next_step_time(front, t)
     outer = front.prev if side == "left" else front.next
-    horizon = math.inf
-    if outer is not None:
-        a, b = (outer, front) if side == "left" else (front, outer)
-        closing = a.speed - b.speed
-        if closing > 0.0:
-            horizon = t + max(b.position(t) - a.position(t), 0.0) / closing
+    horizon = _meeting(outer, front, side, t)
+    join = _join(engine, front, side, table, t)
+    if join is not None:
+        # the far cell keeps its invariant until a wave reaches the contact from there,
+        # and the front beyond it keeps its path until its own next meeting
+        beyond = outer.prev if side == "left" else outer.next
+        horizon = min(horizon, _meeting(beyond, outer, side, t))
+        return moc.Reflector(front.x0, "join", 0.0, join=join), horizon
     if front.kind == FrontKind.GAP:
         # the face across the gap keeps its velocity until a wave reaches it
         far = front.prev.region_right if side == "left" else front.region_right
@@ -308,7 +410,10 @@ def _splice(engine, run: _Run, lat: moc.Lattice, t: float) -> None:
         a.next, b.prev = b, a
     _update_gaps(engine, run, lat, sites)
     for a, b in zip(chain[:-1], chain[1:], strict=True):
-        engine.push_pair(a, b, t)
+        engine.push_pair(a, b, max(lat.cut, t) if math.isfinite(lat.cut) else t)
+    for end, emitted in lat.emitted.items():
+        _send_through(engine, run.left_end if end == "left" else run.right_end, end, emitted,
+                      lat.cut)
     # --- the interior as one patch
     patch = _patch(engine, run, lat, cell_ids, layer_of, is_live_cell, is_live_seg, fans,
                    chain_x, chain_t, chain_side, bounds)
@@ -317,12 +422,65 @@ def _splice(engine, run: _Run, lat: moc.Lattice, t: float) -> None:
     _note_tension(engine, lat, k)
     engine.counters.lattices += 1
     engine.counters.nodes += lat.nodes
+    engine.counters.events += lat.nodes // NODES_PER_EVENT  # the event budget pays for nodes
     engine.events.append(EventRecord(
         t=t, x=float(lat.node_x[0]), kind=EventKind.LATTICE,
         incoming=[f.id for i, f in enumerate(run.slots)
                   if f.kind == FrontKind.RAY and not math.isnan(lat.seg_t1[i])],
         outgoing=[f.id for f in live_fronts if f not in run.slots], site=None,
         nodes=lat.nodes))
+
+
+def _send_through(engine, join: Front, end: str, emitted: dict, cut: float) -> None:
+    """The rays a lattice sent through the contact ``join`` at its ``end``, made fronts of
+    the far side with the cells between them (see ``characteristics.lattice.Join``)."""
+    times = emitted["t"]
+    n = times.size
+    right = end == "right"
+    far_cell = join.region_right if right else join.prev.region_right
+    outer = join.next if right else join.prev
+    x = join.x0
+    fan = engine.next_wave_id()
+    rays, cells = [], []
+    for k in range(n):
+        t_k = float(times[k])
+        state = State(sigma=float(emitted["sigma"][k]), u=float(emitted["u"][k]),
+                      v=float(emitted["v"][k]), e=float(emitted["e"][k]))
+        later = (x, float(times[k + 1])) if k + 1 < n else None
+        region = Region(id=engine.next_region_id(), state=state, material=far_cell.material,
+                        layer=far_cell.layer, t_start=t_k, left_points=[(x, t_k)],
+                        right_points=[(x, t_k)], in_fan=n > 1, table=far_cell.table,
+                        invariants=(float(emitted["jp"][k]), float(emitted["jm"][k])))
+        if later is not None:
+            (region.left_points if right else region.right_points).append(later)
+        engine.regions.append(region)
+        engine.note_stress(state.sigma, x, t_k)
+        cells.append(region)
+        ahead = far_cell if k == 0 else cells[k - 1]
+        behind_state = state
+        rays.append(engine.new_front(
+            FrontKind.RAY, x, t_k, speed=float(emitted["speed"][k]),
+            direction=1 if right else -1, fan=fan, ray_index=k, ray_count=n,
+            jump=behind_state.sigma - ahead.state.sigma, invariant=float(emitted["own"][k])))
+    # the far cell now ends at the first ray, not at the contact
+    (far_cell.left_points if right else far_cell.right_points).append((x, float(times[0])))
+    if right:
+        join.earlier_regions.append((float(times[0]), far_cell.id))
+        for k in range(1, n):
+            join.earlier_regions.append((float(times[k]), cells[k - 1].id))
+        chain = [join, *reversed(rays), outer]
+        for k, ray in enumerate(rays):
+            ray.left_region = cells[k].id
+            ray.region_right = far_cell if k == 0 else cells[k - 1]
+        join.region_right = cells[-1]
+    else:
+        chain = [outer, *rays, join]
+        for k, ray in enumerate(rays):
+            ray.left_region = far_cell.id if k == 0 else cells[k - 1].id
+            ray.region_right = cells[k]
+    for a, b in zip(chain[:-1], chain[1:], strict=True):
+        a.next, b.prev = b, a
+        engine.push_pair(a, b, cut)
 
 
 def _record_changes(front: Front, changes: list, cell_ids: np.ndarray) -> None:

@@ -16,9 +16,9 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from fronttrack.runner import run
 from fronttrack.plotting.attenuation import peak_stress
 from fronttrack.pullback import spall_estimates
+from fronttrack.runner import run
 from fronttrack.scene import Accuracy
 from fronttrack.scene_file import load_scene
 

@@ -17,7 +17,6 @@ import pytest
 from matplotlib.figure import Figure
 from shapely.geometry import Point, Polygon
 
-from fronttrack.runner import run
 from fronttrack.plotting import (
     placed_labels,
     plot_free_surface_velocity,
@@ -36,6 +35,7 @@ from fronttrack.plotting.fans import fan_interior
 from fronttrack.plotting.records import pullback
 from fronttrack.plotting.sites import kind_segments
 from fronttrack.plotting.xt_geometry import eulerian_view, lagrangian_view
+from fronttrack.runner import run
 from fronttrack.scene import Accuracy, Boundary, Layer, Probe, Scene
 from materials import LinearElastic, MieGruneisen
 

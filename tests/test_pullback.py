@@ -14,7 +14,6 @@ import math
 import numpy as np
 import pytest
 
-from fronttrack.runner import run
 from fronttrack.pullback import (
     NoPullbackError,
     acoustic_spall_strength,
@@ -25,6 +24,7 @@ from fronttrack.pullback import (
     surface_record,
     wave_speeds,
 )
+from fronttrack.runner import run
 from fronttrack.scene import Accuracy, Boundary, Layer, Probe, Scene
 from materials import ElasticPlastic, LinearElastic, MieGruneisen
 

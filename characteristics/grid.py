@@ -1,0 +1,156 @@
+"""The grid of states a lattice can reach, evaluated once.
+
+In a zone of one isentrope every state is fixed by its two Riemann invariants, and the
+values they take are those of the cells and rays the zone starts with, closed under
+the reflections its ends and gaps make: a free surface or a prescribed stress maps
+``J+`` to ``J- = J+ - 2 phi(sigma_b)``, a wall or a prescribed velocity to
+``J- = 2 u_b - J+``, and a contact to another isentrope (a join) by the contact node
+of the method of characteristics (equal stress and velocity on both sides, each side
+on its own isentrope).  The states on the grid ``(J+ values) x (J- values)`` come from
+one vectorised call to the isentrope table; the lattice then reads them by index.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from materials import StateOutOfRangeError
+
+from .isentrope import Isentrope
+
+REFLECTION_ROUNDS = 4
+"""Reflections of reflections tabulated in the grid (a ray ringing between two
+reflecting ends needs more; the lattice stops where the grid runs out)."""
+
+
+MAX_GRID_STATES = 200_000
+"""Largest grid a lattice tabulates; a zone that would need more (many rays with many
+reflections of reflections) is left to the queue's Riemann solves."""
+
+
+class GridTooLarge(Exception):
+    """The zone's grid of states would exceed ``MAX_GRID_STATES``."""
+
+
+class Grid:
+    """States on the grid of invariant values ``P x M`` (``J+`` values by ``J-`` values),
+    closed under the reflections the zone can make.
+
+    A reflection is keyed by ``(to, condition)``: ``to = -1`` maps ``J+`` values to ``J-``
+    (a right end, a gap's left face), ``+1`` maps ``J-`` to ``J+``; ``condition`` is
+    ``(holds, value)`` for a boundary or ``("join", end)`` for a contact to another
+    isentrope, whose transmitted waves are kept in ``emitted``.
+    """
+
+    def __init__(self, zone):
+        self.table = zone.table
+        self.joins = {}
+        self.to_minus, self.to_plus = [], []
+        for end, conditions in (("right", self.to_minus), ("left", self.to_plus)):
+            bc = getattr(zone, end)
+            if getattr(bc, "holds", None) is not None:
+                if bc.join is not None:
+                    self.joins[end] = bc.join
+                    conditions.append(("join", end))
+                else:
+                    conditions.append((bc.holds, bc.value))
+        if any(site.kind == "gap" for site in zone.sites):
+            self.to_minus.append(("stress", 0.0))
+            self.to_plus.append(("stress", 0.0))
+        p_values = np.unique(np.concatenate([zone.jp, zone.own[zone.family > 0]]))
+        m_values = np.unique(np.concatenate([zone.jm, zone.own[zone.family < 0]]))
+        for _ in range(REFLECTION_ROUNDS):
+            grown = False
+            for condition in self.to_minus:
+                new = self._reflect(condition, p_values, -1)[0]
+                new = np.setdiff1d(new[np.isfinite(new)], m_values)
+                if new.size:
+                    m_values, grown = np.union1d(m_values, new), True
+            for condition in self.to_plus:
+                new = self._reflect(condition, m_values, +1)[0]
+                new = np.setdiff1d(new[np.isfinite(new)], p_values)
+                if new.size:
+                    p_values, grown = np.union1d(p_values, new), True
+            if not grown:
+                break
+        if p_values.size * m_values.size > MAX_GRID_STATES:
+            raise GridTooLarge(f"{p_values.size} x {m_values.size} states")
+        self.p, self.m = p_values, m_values
+        phi = 0.5 * (p_values[:, None] - m_values[None, :])
+        sigma, v, e, c = self.table.arrays_at_phi(phi.ravel())
+        self.sigma, self.v, self.e, self.c = (a.reshape(phi.shape) for a in (sigma, v, e, c))
+        self.u = 0.5 * (p_values[:, None] + m_values[None, :])
+        self.rows = {name: getattr(self, name).tolist() for name in ("sigma", "u", "e", "c")}
+        self.p_list, self.m_list = p_values.tolist(), m_values.tolist()
+        self.maps, self.emitted = {}, {}
+        for to, conditions, source, target in ((-1, self.to_minus, p_values, m_values),
+                                               (+1, self.to_plus, m_values, p_values)):
+            for condition in conditions:
+                reflected, far = self._reflect(condition, source, to)
+                self.maps[(to, condition)] = _index_map(reflected, target).tolist()
+                if far is not None:
+                    self.emitted[(to, condition)] = tuple(a.tolist() for a in far)
+
+    def _reflect(self, condition, values: np.ndarray, to: int):
+        """Invariants reflected from ``values`` (see the class docstring), and for a join
+        ``(contact stress, far invariant, far speed)`` per value (NaN where the contact
+        leaves the tables)."""
+        holds, value = condition
+        if holds == "velocity":
+            return 2.0 * value - values, None
+        if holds == "stress":
+            phi_b = self.table.phi_at_stress(value)
+            return (values - 2.0 * phi_b if to < 0 else values + 2.0 * phi_b), None
+        join = self.joins[value]
+        sigma, phi_own, phi_far, c_far = _contact_node(self.table, join, values, to)
+        if to < 0:  # arriving J+ from the left; the far cell keeps J-
+            return values - 2.0 * phi_own, (sigma, values - phi_own + phi_far, c_far)
+        return values + 2.0 * phi_own, (sigma, values + phi_own - phi_far, c_far)
+
+    def p_index(self, values):
+        return np.searchsorted(self.p, values)
+
+    def m_index(self, values):
+        return np.searchsorted(self.m, values)
+
+
+CONTACT_NEWTON_STEPS = 12
+"""Newton steps of the contact node (the stress function is smooth and monotone)."""
+
+CONTACT_STRESS_ROUNDING = 1e-12
+"""The contact node's stress is converged to this fraction of the modulus ``rho0 C_L^2``
+(the tables' own rounding: a tighter test never passes and spends every step)."""
+
+
+def _contact_node(table: Isentrope, join, values: np.ndarray, to: int):
+    """Stress at a contact between this zone's isentrope and the join's, where ``values``
+    (this side's arriving invariants) meet the far side's kept invariant:
+    ``phi_own(sigma) + phi_far(sigma) = J+_arriving - J-_far`` (a right end) or
+    ``J+_far - J-_arriving`` (a left end).  Returns ``(sigma, phi_own, phi_far, C_far)``
+    per value, NaN where the stress leaves either table."""
+    rhs = values - join.invariant if to < 0 else join.invariant - values
+    rho_own, rho_far = table.material.rho0, join.table.material.rho0
+    sigma = np.full(values.shape, float(join.stress))
+    nan = np.full(values.shape, np.nan)
+    for _ in range(CONTACT_NEWTON_STEPS):
+        try:
+            phi_own, c_own = table.arrays_at_stress(sigma)
+            phi_far, c_far = join.table.arrays_at_stress(sigma)
+        except StateOutOfRangeError:
+            return nan, nan, nan, nan
+        slope = 1.0 / (rho_own * c_own) + 1.0 / (rho_far * c_far)
+        step = (phi_own + phi_far - rhs) / slope
+        sigma = sigma - step
+        if np.all(np.abs(step) <= CONTACT_STRESS_ROUNDING * rho_own * c_own * c_own):
+            break
+    try:
+        phi_own, _ = table.arrays_at_stress(sigma)
+        phi_far, c_far = join.table.arrays_at_stress(sigma)
+    except StateOutOfRangeError:
+        return nan, nan, nan, nan
+    return sigma, phi_own, phi_far, c_far
+
+
+def _index_map(values: np.ndarray, table_values: np.ndarray) -> np.ndarray:
+    index = np.clip(np.searchsorted(table_values, values), 0, len(table_values) - 1)
+    return np.where((table_values[index] == values) & np.isfinite(values), index, -1)
