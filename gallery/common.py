@@ -33,8 +33,8 @@ import numpy as np  # noqa: E402
 from matplotlib.figure import Figure  # noqa: E402
 from PIL import Image  # noqa: E402
 
-from fronttrack.runner import run  # noqa: E402
 from fronttrack.plotting import placed_labels, plot_sigma_u, plot_xt  # noqa: E402
+from fronttrack.runner import run  # noqa: E402
 from fronttrack.scene_file import load_scene  # noqa: E402
 
 SCENES = HERE / "scenes"
