@@ -174,7 +174,7 @@ def _write_outputs(solution, outdir: Path | None, json_path: Path | None,
             written += save_standard_figures(solution, outdir)
     if json_path is not None:
         json_path.parent.mkdir(parents=True, exist_ok=True)
-        json_path.write_text(json.dumps(solution.to_dict(), indent=1))
+        json_path.write_text(json.dumps(solution.to_dict(), separators=(",", ":")))
         written.append(json_path)
     return written
 
