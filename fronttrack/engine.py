@@ -364,7 +364,13 @@ class Engine:
         if middle is None and left_star is not None and right_star is not None:
             middle = self._entropy_contact(left_star, right_star, material_left, t, x, group)
             if middle is None:
-                left_star = right_star = _merged(left_star, right_star)
+                # each star state is weighted by the rate at which its wave sweeps
+                # material into it: the merged region then holds the mass and energy
+                # the two star regions would (no energy made by neglecting the contact)
+                sweep_left = abs(left_specs[-1].front.speed) if left_specs else 0.0
+                sweep_right = abs(right_specs[-1].front.speed) if right_specs else 0.0
+                left_star = right_star = _merged(left_star, right_star, sweep_left,
+                                                 sweep_right)
         # Fronts left to right, each with the state (and its table) on its right.
         items, right_of, tables = [], [], []
         for k, spec in enumerate(left_specs):
@@ -394,9 +400,13 @@ class Engine:
         """A contact for the entropy jump between two star states, if it matters.
 
         A contact that would reflect less than the negligible stress from the scene's
-        largest wave (``Material.contact_reflection``) is not tracked (every later
-        crossing would be an event for nothing): the two states are merged and the
-        largest relative volume jump so neglected is reported.  Jumps below
+        largest wave (``Material.contact_reflection``) and whose energy jump per unit
+        reference volume (``rho0 |e_L - e_R|``, Pa) is below it too is not tracked
+        (every later crossing would be an event for nothing): the two states are merged
+        and the largest relative volume jump so neglected is reported.  The energy test
+        matters behind a decaying shock: there the entropy jump reflects almost nothing,
+        but a merged state off the shock's Hugoniot would make the shock create energy
+        for as long as it runs.  Jumps below
         ``ENTROPY_JUMP_TOLERANCE`` are rounding.  So is, when the scene sets
         ``accuracy.contact_resolution``, a contact born closer than that to the
         neighbouring contact; those are counted.
@@ -405,7 +415,8 @@ class Engine:
         jump = abs(left.v - right.v) / max(left.v, right.v)
         keep = self.acc.entropy_contacts and jump > ENTROPY_JUMP_TOLERANCE
         if keep and res.negligible > 0.0 and math.isfinite(left.v + right.v):
-            keep = material.contact_reflection(left, right, res.stress_scale) > res.negligible
+            keep = (material.contact_reflection(left, right, res.stress_scale) > res.negligible
+                    or material.rho0 * abs(left.e - right.e) > res.negligible)
         if keep and _contact_within(group, x, self.acc.contact_resolution):
             keep = False
             counters.unresolved_contacts += 1
@@ -541,10 +552,13 @@ def _contact_within(group, x: float, distance: float) -> bool:
     return False
 
 
-def _merged(a: State, b: State) -> State:
-    """One state standing for two that differ negligibly (mean of each numeric field;
-    ``a``'s type is kept, so a model's extra state fields survive)."""
+def _merged(a: State, b: State, weight_a: float = 1.0, weight_b: float = 1.0) -> State:
+    """One state standing for two that differ negligibly: the weighted mean of each
+    numeric field (equal weights when both are zero); ``a``'s type is kept, so a
+    model's extra state fields survive."""
+    total = weight_a + weight_b
+    wa, wb = (weight_a / total, weight_b / total) if total > 0.0 else (0.5, 0.5)
     shared = {f.name for f in dataclasses.fields(b)}
-    means = {f.name: 0.5 * (getattr(a, f.name) + getattr(b, f.name))
+    means = {f.name: wa * getattr(a, f.name) + wb * getattr(b, f.name)
              for f in dataclasses.fields(a) if f.name in shared}
     return dataclasses.replace(a, **means)

@@ -170,3 +170,26 @@ def test_error_estimate_brackets_the_true_error():
     a, b = sol.history(2.5e-3), reference.history(2.5e-3)
     true = a.l1_distance(b, "sigma") / scene.t_end
     assert 0.3 * true < estimate["sigma"] < 3.0 * true
+
+
+def thin_flyer_energy_balance(rays: int) -> float:
+    """Relative energy balance of a thin Al 2024 flyer (0.2 mm at 1 km/s onto 10 mm,
+    bonded, free ends, to 1.6 us): the release from the flyer's back overtakes the shock
+    and decays it."""
+    from materials.library import get
+
+    al = get("Al2024")
+    scene = Scene(layers=(Layer(al, 0.2e-3, 1000.0), Layer(al, 10e-3)), t_end=1.6e-6,
+                  accuracy=Accuracy(rays_per_fan=rays))
+    balance = run(scene).conservation()
+    return balance["energy_error"] / balance["energy"][0]
+
+
+def test_decaying_shock_keeps_its_hugoniot_state_and_the_energy_balance_converges():
+    """Each ray overtaking the shock leaves an entropy jump that reflects almost nothing;
+    merged into the fan's state it put the shock off its Hugoniot and the shock made
+    energy for as long as it ran (+6.1 % / +2.5 % at 8 / 16 rays).  Kept (its energy
+    jump is not negligible), the balance converges: measured +3.8e-3 / +9.8e-4."""
+    coarse, fine = thin_flyer_energy_balance(8), thin_flyer_energy_balance(16)
+    assert abs(fine) < 1.5e-3
+    assert abs(coarse) / abs(fine) > 3.0
