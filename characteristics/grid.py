@@ -80,7 +80,7 @@ class Grid:
         sigma, v, e, c = self.table.arrays_at_phi(phi.ravel())
         self.sigma, self.v, self.e, self.c = (a.reshape(phi.shape) for a in (sigma, v, e, c))
         self.u = 0.5 * (p_values[:, None] + m_values[None, :])
-        self.rows = {name: getattr(self, name).tolist() for name in ("sigma", "u", "e", "c")}
+        self.rows = {name: getattr(self, name).tolist() for name in ("sigma", "u", "c")}
         self.p_list, self.m_list = p_values.tolist(), m_values.tolist()
         self.maps, self.emitted = {}, {}
         for to, conditions, source, target in ((-1, self.to_minus, p_values, m_values),
