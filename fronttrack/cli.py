@@ -20,18 +20,14 @@ import sys
 from importlib import resources
 from pathlib import Path
 
-from materials import MaterialError, NoSolutionError, StateOutOfRangeError, library
+from materials import WavediagramError, library
 
-from .damage import FractureLimitError
-from .engine import EventLimitError
 from .impedance_match import format_table, impedance_match, to_json_dict
 from .runner import run
-from .scene import SceneError
 from .scene_file import load_scene
 from .units import parse_quantity
 
-USER_ERRORS = (SceneError, MaterialError, StateOutOfRangeError, NoSolutionError,
-               EventLimitError, FractureLimitError, FileNotFoundError)
+USER_ERRORS = (WavediagramError, FileNotFoundError)
 """Errors that are the input's fault: reported on one line, exit status 2."""
 
 

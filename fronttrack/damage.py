@@ -24,6 +24,8 @@ from __future__ import annotations
 
 import time
 
+from materials import WavediagramError
+
 from .engine import Engine
 from .scene import Scene, SpallCriterion
 
@@ -35,7 +37,7 @@ MARGIN = 1e-12
 """Relative rounding margin of the damage integral (see ``failure_time``)."""
 
 
-class FractureLimitError(RuntimeError):
+class FractureLimitError(WavediagramError, RuntimeError):
     """A cumulative-damage scene asked for more than ``MAX_FRACTURES`` fractures."""
 
 

@@ -29,7 +29,7 @@ import math
 import time
 
 from characteristics.isentrope import IsentropeTables
-from materials import State
+from materials import State, WavediagramError
 
 from . import interactions, outgoing, spall, zones
 from .counters import Counters
@@ -48,7 +48,7 @@ FRACTURE, FORMATION, SITE, PAIR = 0, 1, 2, 2
 waves meeting at that instant are solved."""
 
 
-class EventLimitError(RuntimeError):
+class EventLimitError(WavediagramError, RuntimeError):
     """The scene needed more events than ``accuracy.max_events`` allows."""
 
 

@@ -61,14 +61,14 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from materials import ElasticPlastic, LinearElastic, Material
+from materials import ElasticPlastic, LinearElastic, Material, WavediagramError
 
 DEFAULT_TOLERANCE = 1e-3
 """Falls and rises smaller than this fraction of the record's largest speed are
 ignored (the small steps that dropped waves and reverberations leave)."""
 
 
-class NoPullbackError(ValueError):
+class NoPullbackError(WavediagramError, ValueError):
     """The record has no pullback: it never falls after its peak, or never rises again."""
 
 

@@ -13,14 +13,14 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
-from materials import Material, MaterialError, State, StateOutOfRangeError
+from materials import Material, MaterialError, State, StateOutOfRangeError, WavediagramError
 
 BOUNDARY_KINDS = ("free", "wall", "velocity", "stress")
 BONDS = ("bonded", "unbonded")
 RELEASE_PATHS = ("isentrope", "hugoniot")
 
 
-class SceneError(ValueError):
+class SceneError(WavediagramError, ValueError):
     """A scene field is missing or outside its allowed range; the message names the field."""
 
 

@@ -7,7 +7,7 @@ about fronts or events.
 
 from .base import Material
 from .elastic_plastic import ElasticPlastic, ElasticPlasticWaveCurve
-from .errors import MaterialError, NoSolutionError, StateOutOfRangeError
+from .errors import MaterialError, NoSolutionError, StateOutOfRangeError, WavediagramError
 from .finite_plastic import FinitePlastic, FinitePlasticWaveCurve
 from .ideal_gas import IdealGas
 from .library import available, get, material_from_spec
@@ -22,5 +22,5 @@ __all__ = [
     "FinitePlasticWaveCurve", "IdealGas",
     "LinearElastic", "Material", "MaterialError", "MieGruneisen", "NoSolutionError",
     "RiemannSolution", "Shock", "State", "StateOutOfRangeError", "available", "get",
-    "material_from_spec", "solve_boundary", "solve_contact",
+    "material_from_spec", "solve_boundary", "solve_contact", "WavediagramError",
 ]
