@@ -21,7 +21,9 @@ class Counters:
     ``dropped_waves`` and ``dropped_stress``: waves
     weaker than the negligible stress and their total (Pa);
     ``neglected_entropy``: the largest relative volume jump of an entropy contact not
-    tracked, ``neglected_contacts`` how many; ``unresolved_contacts``: contacts merged
+    tracked, ``neglected_contacts`` how many, ``neglected_contact_energy`` the largest
+    specific energy jump (J/kg) of one whose energy was not negligible (its lower-energy
+    side was kept); ``unresolved_contacts``: contacts merged
     because they were born closer than ``accuracy.contact_resolution`` to another;
     ``suppressed_spalls`` and ``suppressed_tension`` (Pa): fractures not made because
     they fell inside an earlier fracture zone or spacing, and the largest tension so
@@ -36,6 +38,7 @@ class Counters:
     dropped_stress: float = 0.0
     neglected_entropy: float = 0.0
     neglected_contacts: int = 0
+    neglected_contact_energy: float = 0.0
     unresolved_contacts: int = 0
     suppressed_spalls: int = 0
     suppressed_tension: float = 0.0

@@ -364,13 +364,8 @@ class Engine:
         if middle is None and left_star is not None and right_star is not None:
             middle = self._entropy_contact(left_star, right_star, material_left, t, x, group)
             if middle is None:
-                # each star state is weighted by the rate at which its wave sweeps
-                # material into it: the merged region then holds the mass and energy
-                # the two star regions would (no energy made by neglecting the contact)
-                sweep_left = abs(left_specs[-1].front.speed) if left_specs else 0.0
-                sweep_right = abs(right_specs[-1].front.speed) if right_specs else 0.0
-                left_star = right_star = _merged(left_star, right_star, sweep_left,
-                                                 sweep_right)
+                left_star = right_star = self._neglected_contact_state(
+                    left_star, right_star, material_left, left_specs, right_specs)
         # Fronts left to right, each with the state (and its table) on its right.
         items, right_of, tables = [], [], []
         for k, spec in enumerate(left_specs):
@@ -425,6 +420,31 @@ class Engine:
         counters.neglected_entropy = max(counters.neglected_entropy, jump)
         counters.neglected_contacts += jump > ENTROPY_JUMP_TOLERANCE
         return None
+
+    def _neglected_contact_state(self, left: State, right: State, material, left_specs,
+                                 right_specs) -> State:
+        """The one state that replaces two star states whose entropy contact is not tracked.
+
+        Where the two differ by a negligible energy (``rho0 |e_L - e_R|`` below the
+        negligible stress) each is weighted by the rate at which its wave sweeps
+        material into it, so that the merged region holds the mass and energy the two
+        star regions would.  Where the contact was neglected although its energy jump is
+        not negligible (``accuracy.entropy_contacts = false``, or a contact closer than
+        ``contact_resolution`` to another), the two waves will not sweep for the same
+        time, and any mean would make the longer-running wave create energy for as long
+        as it runs: the state of lower specific internal energy is taken for both sides,
+        so the wave on the other side runs into a state below its jump conditions and
+        can only lose energy.  The largest such energy jump is counted
+        (``neglected_contact_energy``, J/kg).
+        """
+        if material.rho0 * abs(left.e - right.e) <= self.resolution.negligible:
+            sweep_left = abs(left_specs[-1].front.speed) if left_specs else 0.0
+            sweep_right = abs(right_specs[-1].front.speed) if right_specs else 0.0
+            return _merged(left, right, sweep_left, sweep_right)
+        counters = self.counters
+        counters.neglected_contact_energy = max(counters.neglected_contact_energy,
+                                                abs(left.e - right.e))
+        return left if left.e <= right.e else right
 
     def splice(self, group, items, between, tables, region_left, region_right, t, x,
                middle) -> None:
@@ -490,7 +510,8 @@ class Engine:
         region_right.right_points.append((x_right, t))
         region_right.left_points.append((x, t))
         region_left.t_end = region_right.t_end = t
-        state = _merged(region_left.state, region_right.state)
+        # weighted by the mass each region holds now, so the merged region holds both
+        state = _merged(region_left.state, region_right.state, x - x_left, x_right - x)
         merged = self.new_region(state, region_left.material, region_left.layer, t,
                                  (x_left, t), (x_right, t), in_fan=inside_fan(before, after))
         before.next, after.prev = after, before

@@ -185,6 +185,15 @@ def _negligible(scene: Scene, scale: float, step: float, makes_fans: bool) -> fl
     return negligible
 
 
+def _values_until(boundary, t_end: float) -> list[float]:
+    """The values a boundary history takes up to ``t_end`` (s): its points before then and
+    its value at ``t_end`` (the history is linear between points, so these bound it)."""
+    if not boundary.history:
+        return []
+    return [value for t, value in boundary.history if t <= t_end] + [
+        boundary.value_at(t_end)]
+
+
 def stress_scale(scene: Scene, states: list[State]) -> float:
     """Largest stress the initial Riemann problems produce (Pa): scales steps and thresholds."""
     release = scene.accuracy.release
@@ -198,7 +207,7 @@ def stress_scale(scene: Scene, states: list[State]) -> float:
     ends = ((scene.left, states[0], layers[0].material, "left"),
             (scene.right, states[-1], layers[-1].material, "right"))
     for spec, state, material, side in ends:
-        for _, value in spec.history:
+        for value in _values_until(spec, scene.t_end):
             if spec.kind == BoundaryKind.STRESS:
                 scale = max(scale, abs(value))
             elif spec.kind == BoundaryKind.VELOCITY:

@@ -8,6 +8,7 @@ characteristic step and the difference reported (``fronttrack.error_estimate``).
 
 from __future__ import annotations
 
+from . import balance
 from .damage import run_with_damage
 from .engine import Engine
 from .error_estimate import estimate_error
@@ -19,6 +20,9 @@ def run(scene: Scene, progress=None) -> Solution:
     """Evolve ``scene`` to ``scene.t_end`` and return its ``Solution``.
 
     ``progress``, if given, is called as ``progress(events, t)`` every thousand events.
+    The solution's ``accuracy_report`` holds the run's momentum and energy ``balance``
+    (``fronttrack.balance``) and ``warnings``: one line for each balance beyond what the
+    accuracy settings promise.
     """
     if scene.spall_criterion is not None:
         solution = run_with_damage(scene, progress)
@@ -29,4 +33,8 @@ def run(scene: Scene, progress=None) -> Solution:
                     else {"method": "exact: no simple waves in this solution", "sigma": 0.0,
                           "u": 0.0})
         solution.accuracy_report["error_estimate"] = estimate
+    report = solution.accuracy_report
+    report["balance"] = balance.balance(solution)
+    report["warnings"] = report.get("warnings", []) + balance.warnings(report,
+                                                                       report["balance"])
     return solution

@@ -1,0 +1,78 @@
+"""The momentum and energy balance of a run, and what the accuracy settings promise.
+
+Per unit area of the plates, between ``t = 0`` and ``t_end``,
+
+    P(t_end) - P(0) = I        (I: impulse of the boundary stresses)
+    E(t_end) - E(0) = W        (W: work of the boundary stresses; E = sum m (e + u^2/2))
+
+hold exactly for the equations the engine solves.  Shocks and contacts satisfy their
+jump conditions to rounding; the characteristics of a simple wave move at the
+characteristic speed of their own state, which leaves a residual second order in the
+characteristic step; waves weaker than the negligible stress are dropped, and the
+stress mismatch each one leaves behind acts as a small force until the next wave
+passes.  The residuals are reported relative to a scale that cannot vanish: momentum
+against the momentum content ``sum m |u|`` (plates moving towards each other carry
+almost no net momentum), energy against the largest of the energies and the work.
+
+The settings promise a balance within ``BALANCE_FACTOR`` times the larger of the
+record tolerance and the estimated record error, as fractions of the stress scale (a
+relative error ``f`` in stresses and velocities is about ``2 f`` in energy).  A run
+whose balance is beyond that, or that created energy beyond it, says so in one line.
+"""
+
+from __future__ import annotations
+
+BALANCE_FACTOR = 2.0
+"""Promised relative balance per unit relative record tolerance (energy is quadratic)."""
+
+ROUNDING = 1e-9
+"""Balances below this relative size are rounding (shock-only scenes reach ~1e-12)."""
+
+
+def promised_balance(report: dict) -> float:
+    """The relative momentum and energy balance the accuracy settings promise."""
+    scale = report["stress_scale"]
+    if not scale > 0.0:
+        return ROUNDING
+    record = max(report["stress_tolerance"], report["estimated_record_error"])
+    return max(BALANCE_FACTOR * record / scale, ROUNDING)
+
+
+def balance(solution) -> dict:
+    """The run's balance at ``t_end``: relative momentum residual, signed relative energy
+    residual (positive: energy created), and the promise they are held to."""
+    c = solution.conservation()
+    energy_scale = max(abs(c["energy"][0]), abs(c["energy"][1]), abs(c["work"]), 1e-300)
+    return {
+        "momentum_error": float(c["momentum_relative_error"]),
+        "energy_error": float(c["energy_error"] / energy_scale),
+        "promised": promised_balance(solution.accuracy_report),
+    }
+
+
+def warnings(report: dict, entry: dict) -> list[str]:
+    """One-line warnings for a balance ``entry`` (from ``balance``) beyond its promise,
+    with the setting that most likely explains it (from the accuracy ``report``)."""
+    promised = entry["promised"]
+    found = []
+    if entry["energy_error"] > promised:
+        found.append(f"energy created: {entry['energy_error']:.2g} of the total, beyond the "
+                     f"{promised:.2g} the accuracy settings promise{_hint(report)}")
+    elif -entry["energy_error"] > promised:
+        found.append(f"energy lost: {-entry['energy_error']:.2g} of the total, beyond the "
+                     f"{promised:.2g} the accuracy settings promise{_hint(report)}")
+    if entry["momentum_error"] > promised:
+        found.append(f"momentum balance off by {entry['momentum_error']:.2g} of the momentum "
+                     f"content, beyond the {promised:.2g} the accuracy settings promise"
+                     f"{_hint(report)}")
+    return found
+
+
+def _hint(report: dict) -> str:
+    if report.get("neglected_contact_energy", 0.0) > 0.0:
+        return " (entropy contacts were neglected: set accuracy.entropy_contacts = true)"
+    if report.get("dropped_waves", 0):
+        return (f" ({report['dropped_waves']} waves below the negligible stress "
+                f"{report['negligible_stress']:.3g} Pa were dropped: lower "
+                "accuracy.negligible_stress)")
+    return ""
