@@ -25,7 +25,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from materials import RIGHT, State, solve_boundary, solve_contact
+from materials import State, solve_boundary, solve_contact
 
 from .kinds import BoundaryKind, Release
 from .scene import Scene
@@ -105,11 +105,7 @@ def initial_state(layer) -> State:
     """A layer's initial state: its stress reached along its wave curve, moving at ``velocity``."""
     if layer.initial is not None:
         return layer.initial
-    material = layer.material
-    reference = material.reference_state()
-    if layer.stress != 0.0:
-        reference = material.wave_curve(reference, RIGHT).state_at(layer.stress)
-    return reference.moving(layer.velocity)
+    return layer.material.initial_state(layer.stress, layer.velocity)
 
 
 def resolve(scene: Scene, states: list[State]) -> Resolution:

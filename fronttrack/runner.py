@@ -8,7 +8,7 @@ characteristic step and the difference reported (``fronttrack.error_estimate``).
 
 from __future__ import annotations
 
-from . import balance
+from . import balance, fits
 from .damage import run_with_damage
 from .engine import Engine
 from .error_estimate import estimate_error
@@ -22,7 +22,8 @@ def run(scene: Scene, progress=None) -> Solution:
     ``progress``, if given, is called as ``progress(events, t)`` every thousand events.
     The solution's ``accuracy_report`` holds the run's momentum and energy ``balance``
     (``fronttrack.balance``) and ``warnings``: one line for each balance beyond what the
-    accuracy settings promise.
+    accuracy settings promise, and for each material compressed beyond its fitted data
+    (``fronttrack.fits``).
     """
     if scene.spall_criterion is not None:
         solution = run_with_damage(scene, progress)
@@ -35,6 +36,6 @@ def run(scene: Scene, progress=None) -> Solution:
         solution.accuracy_report["error_estimate"] = estimate
     report = solution.accuracy_report
     report["balance"] = balance.balance(solution)
-    report["warnings"] = report.get("warnings", []) + balance.warnings(report,
-                                                                       report["balance"])
+    report["warnings"] = (report.get("warnings", []) + fits.fit_warnings(solution)
+                          + balance.warnings(report, report["balance"]))
     return solution

@@ -16,7 +16,8 @@ file reads as a lab notebook and converts to the SI ``Scene`` of
     rho0 = "1186 kg/m3"
     ...
     [[layer]]               # left to right: material, thickness, velocity,
-    material = "Cu"         # stress (compression positive), name, bond
+    material = "Cu"         # stress (compression positive), name, bond; a gas
+                            # layer: pressure (or temperature, with cv), density
     thickness = "1 mm"
     [left]                  # kind = free | wall | velocity | stress, with a
     kind = "free"           # constant value or a history [[t, value], ...]
@@ -40,7 +41,7 @@ import tomllib
 from pathlib import Path
 from typing import Any
 
-from materials import Material, MaterialError
+from materials import IdealGas, Material, MaterialError, State, StateOutOfRangeError
 from materials.library import FIELD_DIMENSIONS, get, material_from_spec
 
 from .scene import (
@@ -57,7 +58,10 @@ from .units import parse_quantity
 
 _TOP_KEYS = ("title", "t_end", "accuracy", "materials", "layer", "left", "right", "probe",
              "spall")
-_LAYER_KEYS = ("material", "thickness", "velocity", "stress", "name", "bond")
+_LAYER_KEYS = ("material", "thickness", "velocity", "stress", "name", "bond", "pressure",
+               "density", "temperature")
+_GAS_KEYS = ("pressure", "density", "temperature")
+"""Keys that give a gas layer its state (a gas is given a state, not loaded into one)."""
 _BOUNDARY_KEYS = ("kind", "value", "history")
 _PROBE_KEYS = ("name", "at")
 _ACCURACY_KEYS = ("rays_per_fan", "stress_tolerance", "velocity_tolerance",
@@ -193,15 +197,47 @@ def _layer(table: dict[str, Any], index: int, inline: dict[str, Material]) -> La
     bond = _string(table, "bond", f"{path}.bond", "bonded")
     if index == 0 and "bond" in table:
         raise SceneError(f"{path}.bond: the first layer has no previous layer to bond to")
+    velocity = _optional_quantity(table, "velocity", "velocity", f"{path}.velocity", 0.0)
+    stress = _optional_quantity(table, "stress", "stress", f"{path}.stress", 0.0)
     return Layer(
         material=material,
         thickness=parse_quantity(_required(table, "thickness", path), "length",
                                  f"{path}.thickness"),
-        velocity=_optional_quantity(table, "velocity", "velocity", f"{path}.velocity", 0.0),
-        stress=_optional_quantity(table, "stress", "stress", f"{path}.stress", 0.0),
+        velocity=velocity,
+        stress=stress,
         bond=bond,
         name=_string(table, "name", f"{path}.name", ""),
+        initial=_gas_state(table, path, material, stress, velocity),
     )
+
+
+def _gas_state(table: dict[str, Any], path: str, material: Material, stress: float,
+               velocity: float) -> State | None:
+    """A gas layer's initial state from ``pressure`` (or ``stress``), ``density`` (default
+    the material's ``rho0``) and ``temperature`` (with the gas's cv): ``None`` when
+    the layer gives none of them (the layer's stress then sets its pressure)."""
+    given = [key for key in _GAS_KEYS if key in table]
+    if not given:
+        return None
+    if not isinstance(material, IdealGas):
+        raise SceneError(f"{path}.{given[0]}: only gas layers take "
+                         f"{', '.join(_GAS_KEYS)}; {material.name} is a solid (use stress)")
+    if "pressure" in table and "stress" in table:
+        raise SceneError(f"{path}.pressure: give the gas's pressure or its stress, not both")
+    density = _optional_quantity(table, "density", "density", f"{path}.density",
+                                 material.rho0)
+    pressure = _optional_quantity(table, "pressure", "stress", f"{path}.pressure", stress)
+    try:
+        if "temperature" in table:
+            if "pressure" in table or "stress" in table:
+                raise SceneError(f"{path}.temperature: give the gas's pressure or its "
+                                 "temperature, not both")
+            temperature = parse_quantity(table["temperature"], "temperature",
+                                         f"{path}.temperature")
+            pressure = material.pressure_at(density, temperature)
+        return material.initial_state(pressure, velocity, density)
+    except (MaterialError, StateOutOfRangeError) as error:
+        raise SceneError(f"{path}: {error}") from None
 
 
 def _required(table: dict[str, Any], key: str, path: str) -> Any:

@@ -36,6 +36,7 @@ UNITS: dict[str, dict[str, Fraction]] = {
                 "g/cc": _F(10**3)},
     "specific_energy": {"J/kg": _F(1), "kJ/kg": _F(10**3), "MJ/kg": _F(10**6)},
     "specific_heat": {"J/kg/K": _F(1), "J/(kg K)": _F(1)},
+    "temperature": {"K": _F(1)},
     "dimensionless": {"": _F(1)},
 }
 """Allowed units of each dimension and their exact factors to SI (1 in = 0.0254 m and

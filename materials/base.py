@@ -36,7 +36,7 @@ import numpy as np
 
 from .errors import MaterialError, StateOutOfRangeError
 from .quadrature import UNIT_NODES, UNIT_WEIGHTS, panel_edges, points_for, unit_rule
-from .state import State
+from .state import RIGHT, State
 
 _CHEB_POINTS = 20
 """Chebyshev points per panel for the tabulated isentrope function ``F``."""
@@ -118,6 +118,18 @@ class Material(ABC):
     def reference_state(self, u: float = 0.0) -> State:
         """The unstressed reference state (``v = v0``, ``e = 0``) moving at ``u``."""
         return State(sigma=self.stress(self.v0, 0.0), u=u, v=self.v0, e=0.0)
+
+    def initial_state(self, stress: float = 0.0, u: float = 0.0) -> State:
+        """A layer's initial state at ``stress`` (Pa) moving at ``u`` (m/s).
+
+        A solid starts unstressed at its reference state; a prestressed solid reaches
+        its stress along its wave curve from there (a shock if compressive, the
+        isentrope if tensile), as a specimen loaded uniaxially would.
+        """
+        state = self.reference_state()
+        if stress != 0.0:
+            state = self.wave_curve(state, RIGHT).state_at(stress)
+        return state.moving(u)
 
     def state(self, v: float, e: float, u: float = 0.0) -> State:
         """The state at ``(v, e)`` moving at ``u``, checked against the model's range."""

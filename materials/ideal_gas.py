@@ -18,7 +18,7 @@ import math
 import numpy as np
 
 from .base import AffineEnergyMaterial, require_number, require_positive
-from .errors import MaterialError
+from .errors import MaterialError, StateOutOfRangeError
 from .state import State
 
 
@@ -46,6 +46,29 @@ class IdealGas(AffineEnergyMaterial):
             raise MaterialError(f"{self.name}: pressure must be >= 0 Pa, got {p!r}")
         v = 1.0 / rho
         return State(sigma=float(p), u=float(u), v=v, e=p * v / (self.gamma - 1.0))
+
+    def initial_state(self, stress: float = 0.0, u: float = 0.0,
+                      density: float | None = None) -> State:
+        """A gas layer at pressure ``stress`` (Pa) and ``density`` (kg/m^3, default
+        ``rho0``) moving at ``u`` (m/s): a gas is given its state, not loaded into it.
+
+        A gas at zero pressure has no sound speed (no wave can cross it in finite time),
+        so the pressure must be positive.
+        """
+        if not stress > 0.0:
+            raise StateOutOfRangeError(
+                f"{self.name}: a gas layer needs an initial pressure > 0 Pa (a gas at zero "
+                f"pressure has no sound speed), got {stress!r} Pa; set the layer's "
+                '"pressure" (e.g. "101.325 kPa") or, with cv, its "temperature"')
+        return self.state_from_pressure(self.rho0 if density is None else density, stress, u)
+
+    def pressure_at(self, density: float, temperature: float) -> float:
+        """Pressure (Pa) at ``density`` (kg/m^3) and ``temperature`` (K):
+        ``p = (gamma - 1) rho cv T``."""
+        if self.cv is None:
+            raise MaterialError(f"{self.name}: a temperature needs the gas's cv (J/(kg K))")
+        temperature = require_positive("temperature", temperature, self.name)
+        return (self.gamma - 1.0) * density * self.cv * temperature
 
     def volume_range(self) -> tuple[float, float]:
         return (0.0, math.inf)

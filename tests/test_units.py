@@ -46,6 +46,7 @@ CONVERSIONS = [
     ("4.9 MJ/kg", "specific_energy", 4.9e6),
     ("385 J/kg/K", "specific_heat", 385.0),
     ("385 J/(kg K)", "specific_heat", 385.0),
+    ("293.15 K", "temperature", 293.15),
     ("1.52", "dimensionless", 1.52),
 ]
 
