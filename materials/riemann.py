@@ -81,6 +81,10 @@ def solve_contact(left_material, left: State, right_material, right: State,
     """
     curve_l = left_material.wave_curve(left, LEFT, release)
     curve_r = right_material.wave_curve(right, RIGHT, release)
+    if not math.isfinite(left.v) or not math.isfinite(right.v):
+        # a gas expanded to vacuum (v = inf, sigma = 0) carries no stress and cannot be
+        # compressed again: to the other side the contact is a free surface
+        return _against_vacuum(curve_l, left, curve_r, right)
     du = right.u - left.u
 
     def phi(sigma):
@@ -221,6 +225,20 @@ def _separate(curve_l, curve_r, bonded_sigma: float):
     )
 
 
+def _against_vacuum(curve_l, left: State, curve_r, right: State) -> RiemannSolution:
+    """A side expanded to vacuum sends no wave; the other unloads to a free surface."""
+    def side(curve, state):
+        if not math.isfinite(state.v):
+            return (), state
+        return curve.waves(0.0), curve.state_at(0.0)
+
+    left_waves, left_star = side(curve_l, left)
+    right_waves, right_star = side(curve_r, right)
+    return RiemannSolution(left_waves=left_waves, right_waves=right_waves,
+                           left_star=left_star, right_star=right_star, separated=True,
+                           bonded_sigma=0.0)
+
+
 def solve_boundary(material, state: State, boundary_at: str, *, stress: float | None = None,
                    velocity: float | None = None, release: str = "isentrope",
                    ) -> RiemannSolution:
@@ -235,6 +253,10 @@ def solve_boundary(material, state: State, boundary_at: str, *, stress: float | 
     if boundary_at not in ("left", "right"):
         raise ValueError(f"boundary_at must be 'left' or 'right', got {boundary_at!r}")
     direction = LEFT if boundary_at == "right" else RIGHT
+    if not math.isfinite(state.v):
+        # a gas expanded to vacuum: no wave can run into it, the boundary sees nothing
+        sides = ((), (), state, None) if direction == LEFT else ((), (), None, state)
+        return RiemannSolution(*sides, bonded_sigma=0.0)
     curve = material.wave_curve(state, direction, release)
     if stress is not None:
         sigma = float(stress)

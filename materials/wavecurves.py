@@ -178,7 +178,8 @@ class HydrodynamicWaveCurve(StressRange):
             # A closed-form isentrope good to a few ulps of its own stress down to vacuum:
             # the rounding is corrected by a factor, not a shift, so that a release to
             # 1e-15 of the initial pressure is not swamped by an ulp of it.
-            scale = a.sigma / mat.isentrope(a, a.v)[0]
+            on_path = mat.isentrope(a, a.v)[0]
+            scale = a.sigma / on_path if on_path != 0.0 else 1.0
             noise_floor = 0.0
 
             def residual(v):

@@ -249,3 +249,13 @@ def test_gas_keys_on_a_solid_layer_name_the_field(tmp_path):
             thickness = "1 mm"
             pressure = "1 GPa"
             """)
+
+
+def test_a_gas_expanded_to_vacuum_meets_its_neighbours_as_a_free_surface():
+    # campaign seed 8: two thin gas layers between free ends expand to vacuum; a later
+    # wave reaching the vacuum state crashed in the wave curve (0/0, then a NaN range)
+    from random_scenes import campaign_scene
+    solution = run(campaign_scene(8))
+    vacuum = [r for r in solution.regions if r.state.v == float("inf")]
+    assert vacuum and all(r.state.sigma == 0.0 for r in vacuum)
+    assert solution.accuracy_report["balance"]["momentum_error"] < 0.01
