@@ -78,7 +78,9 @@ class Front:
     place a ray in its simple wave and ``invariant`` is its own Riemann invariant (m/s,
     NaN for a ray without an isentrope table).  For sites: ``bond``, ``strength``
     (tension it carries, Pa), ``side`` of a boundary, and the gap's ``gap_width``
-    (Eulerian, m) at ``gap_time``.  ``history`` records ``(t, kind)`` changes of a site's
+    (Eulerian, m) at ``gap_time``; a piston boundary that separated from its face keeps
+    its ``piston_velocity`` (m/s, ``None`` while in contact) and the gap the same way.
+    ``history`` records ``(t, kind)`` changes of a site's
     kind; ``boundary_steps`` the ``(t, value)`` steps of a prescribed history;
     ``earlier_regions`` records ``(t, region_id)``: the region on the right until ``t``.
     """
@@ -109,6 +111,7 @@ class Front:
     gap_width: float = 0.0
     gap_time: float = 0.0
     gap_version: int = 0
+    piston_velocity: float | None = None
     history: list = field(default_factory=list)
     boundary_steps: list = field(default_factory=list)
     earlier_regions: list = field(default_factory=list)

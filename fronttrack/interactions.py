@@ -22,6 +22,7 @@ launches a simple wave, one characteristic per step.
 
 from __future__ import annotations
 
+import dataclasses
 import math
 
 from materials import NoSolutionError, RiemannSolution, solve_boundary, solve_contact
@@ -118,13 +119,65 @@ def _boundary(engine, site, region_left, region_right, t, incoming, timer):
     if timer:
         _schedule_next_step(engine, site, t)
     release = engine.resolution.release
+    kind = EventKind.REFLECTION if incoming else EventKind.BOUNDARY
     if spec.kind in (BoundaryKind.FREE, BoundaryKind.STRESS):
-        sol = solve_boundary(region.material, region.state, site.side, stress=value,
-                             release=release)
-    else:
-        sol = solve_boundary(region.material, region.state, site.side, velocity=value,
-                             release=release)
-    return (EventKind.REFLECTION if incoming else EventKind.BOUNDARY), sol
+        return kind, solve_boundary(region.material, region.state, site.side, stress=value,
+                                    release=release)
+    if spec.kind == BoundaryKind.VELOCITY and spec.bond != "bonded":
+        return _piston(engine, site, region, value, t, kind)
+    return kind, solve_boundary(region.material, region.state, site.side, velocity=value,
+                                release=release)
+
+
+def _piston(engine, site, region, velocity: float, t: float, kind):
+    """A velocity boundary that pushes but cannot pull (an unbonded piston).
+
+    In contact, the face moves with the piston unless that needs tension: then the face
+    unloads to a free surface and a gap opens between it and the piston.  While apart,
+    the gap's width changes at the difference of the face's and the piston's velocities
+    (both piecewise constant between events: the boundary's history is stepped), and the
+    two meet again when it closes: the piston strikes the face (a velocity reflection).
+    Opening and closing are ``GAP_OPEN`` and ``GAP_CLOSE`` events of the boundary.
+    """
+    release = engine.resolution.release
+    outward = -1.0 if site.side == "left" else 1.0  # direction from the face to the piston
+    if site.piston_velocity is not None:
+        opening = outward * (site.piston_velocity - region.state.u)
+        site.gap_width += opening * (t - site.gap_time)
+        site.gap_time = t
+        if site.gap_width > engine.resolution.x_tol:
+            site.piston_velocity = velocity
+            _push_piston_closure(engine, site, region.state.u, t)
+            return kind, solve_boundary(region.material, region.state, site.side, stress=0.0,
+                                        release=release)
+        site.piston_velocity = None  # the piston meets the face again
+        site.gap_version += 1
+        site.history.append((t, FrontKind.BOUNDARY))
+        _schedule_next_step(engine, site, t)
+        kind = EventKind.GAP_CLOSE
+    sol = solve_boundary(region.material, region.state, site.side, velocity=velocity,
+                         release=release)
+    if sol.bonded_sigma >= 0.0:
+        return kind, sol
+    free = solve_boundary(region.material, region.state, site.side, stress=0.0,
+                          release=release)
+    free = dataclasses.replace(free, separated=True, bonded_sigma=sol.bonded_sigma)
+    site.piston_velocity, site.gap_width, site.gap_time = velocity, 0.0, t
+    site.history.append((t, FrontKind.GAP))
+    face = free.right_star if site.side == "left" else free.left_star
+    _push_piston_closure(engine, site, face.u, t)
+    return EventKind.GAP_OPEN, free
+
+
+def _push_piston_closure(engine, site, face_velocity: float, t: float) -> None:
+    """Queue the time the piston reaches its face again, if it is closing in on it
+    (a new version of the site's events: the boundary's next step is queued again)."""
+    site.gap_version += 1
+    _schedule_next_step(engine, site, t)
+    outward = -1.0 if site.side == "left" else 1.0
+    closing = outward * (face_velocity - site.piston_velocity)
+    if closing > 0.0:
+        engine.push_site(site, t + site.gap_width / closing)
 
 
 def combine(left_solution, right_solution) -> RiemannSolution:

@@ -56,11 +56,14 @@ class Boundary:
     points (s, and m/s or Pa), linear in between and constant after the last
     point; one point means a constant value.  Two points at one time make a
     step (a square pulse is ``(0, P), (tau, P), (tau, 0)``): the later value holds
-    from that time on.
+    from that time on.  A velocity boundary is a piston: it pushes, and unless ``bond``
+    is ``"bonded"`` a piston that pulls away faster than the material can follow
+    separates from it; the face is then free until the two meet again.
     """
 
     kind: str = "free"
     history: tuple[tuple[float, float], ...] = ()
+    bond: str = "unbonded"
 
     def value_at(self, t: float) -> float:
         """Prescribed velocity (m/s) or stress (Pa) at time ``t`` (s)."""
@@ -207,6 +210,8 @@ class Scene:
             if layer.bond not in BONDS:
                 raise SceneError(f"{where}.bond: must be one of {BONDS}, got {layer.bond!r}")
         for side, boundary in (("left", self.left), ("right", self.right)):
+            if boundary.bond not in BONDS:
+                raise SceneError(f"{side}.bond: must be one of {BONDS}, got {boundary.bond!r}")
             if boundary.kind not in BOUNDARY_KINDS:
                 raise SceneError(
                     f"{side}.kind: must be one of {BOUNDARY_KINDS}, got {boundary.kind!r}")

@@ -20,7 +20,8 @@ file reads as a lab notebook and converts to the SI ``Scene`` of
                             # layer: pressure (or temperature, with cv), density
     thickness = "1 mm"
     [left]                  # kind = free | wall | velocity | stress, with a
-    kind = "free"           # constant value or a history [[t, value], ...]
+    kind = "free"           # constant value or a history [[t, value], ...];
+                            # a velocity (a piston) may be bond = "bonded" (pulls)
     [[probe]]
     name = "rear"
     at = "right"            # "left", "right" or a Lagrangian position
@@ -62,7 +63,7 @@ _LAYER_KEYS = ("material", "thickness", "velocity", "stress", "name", "bond", "p
                "density", "temperature")
 _GAS_KEYS = ("pressure", "density", "temperature")
 """Keys that give a gas layer its state (a gas is given a state, not loaded into one)."""
-_BOUNDARY_KEYS = ("kind", "value", "history")
+_BOUNDARY_KEYS = ("kind", "value", "history", "bond")
 _PROBE_KEYS = ("name", "at")
 _ACCURACY_KEYS = ("rays_per_fan", "stress_tolerance", "velocity_tolerance",
                   "characteristic_step", "negligible_stress", "release",
@@ -258,12 +259,15 @@ def _boundary(table: Any, side: str) -> Boundary:
         if given:
             raise SceneError(f"{side}.{given[0]}: a {kind} boundary takes no {given[0]}")
         return Boundary(kind)
+    bond = _string(table, "bond", f"{side}.bond", "unbonded")
+    if "bond" in table and kind != "velocity":
+        raise SceneError(f"{side}.bond: only a velocity boundary (a piston) takes a bond")
     if len(given) != 1:
         raise SceneError(f"{side}: a {kind} boundary needs exactly one of value or history")
     dimension = _BOUNDARY_DIMENSION[kind]
     if "value" in table:
         return Boundary(kind, ((0.0, parse_quantity(table["value"], dimension,
-                                                    f"{side}.value")),))
+                                                    f"{side}.value")),), bond)
     points = table["history"]
     if not isinstance(points, list) or not points:
         raise SceneError(f'{side}.history: expected a list of [time, value] pairs such as '
@@ -275,7 +279,7 @@ def _boundary(table: Any, side: str) -> Boundary:
             raise SceneError(f"{where}: expected a [time, value] pair, got {point!r}")
         history.append((parse_quantity(point[0], "time", f"{where} time"),
                         parse_quantity(point[1], dimension, f"{where} value")))
-    return Boundary(kind, tuple(history))
+    return Boundary(kind, tuple(history), bond)
 
 
 def _probe(table: dict[str, Any], index: int) -> Probe:

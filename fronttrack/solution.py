@@ -432,8 +432,25 @@ class Solution:
         end = self.scene.left if x == 0.0 else self.scene.right if x == self.scene.length \
             else None
         if end is not None:
-            states = [_held(end, t, s) for t, s in zip(coords, states, strict=True)]
+            apart = self._piston_gaps("left" if x == 0.0 else "right")
+            states = [_held(end, t, s, apart) for t, s in zip(coords, states, strict=True)]
         return _history(coords, states, t_end)
+
+    def _piston_gaps(self, side: str) -> list[tuple[float, float]]:
+        """The ``(t_open, t_close)`` intervals (s) during which a piston boundary was apart
+        from its face (``fronttrack.interactions._piston``)."""
+        boundary = next(f for f in self.engine_fronts
+                        if f.kind == FrontKind.BOUNDARY and f.side == side)
+        intervals, opened = [], None
+        for t, kind in boundary.history:
+            if kind == FrontKind.GAP:
+                opened = t
+            elif opened is not None:
+                intervals.append((opened, t))
+                opened = None
+        if opened is not None:
+            intervals.append((opened, math.inf))
+        return intervals
 
     def cell_history(self, at) -> History:
         """The record of the cells the engine kept at a station: constant pieces."""
@@ -662,12 +679,13 @@ class Solution:
         return doc
 
 
-def _held(boundary, t: float, state: State) -> State:
+def _held(boundary, t: float, state: State, apart=()) -> State:
     """A state at an end of the stack with the quantity its boundary prescribes held
     exactly (the reconstruction between two rays reaching a free surface gives its zero
-    stress only to rounding)."""
-    if boundary.kind in ("free", "stress"):
-        value = boundary.value_at(t)
+    stress only to rounding).  While a piston is ``apart`` from its face (``(t_open,
+    t_close)`` intervals, s), the face is free."""
+    if boundary.kind in ("free", "stress") or any(a <= t < b for a, b in apart):
+        value = boundary.value_at(t) if boundary.kind in ("free", "stress") else 0.0
         return state if state.sigma == value else dataclasses.replace(state, sigma=value)
     value = boundary.value_at(t)
     return state if state.u == value else dataclasses.replace(state, u=value)

@@ -297,6 +297,10 @@ def _end(engine, front: Front, side: str, t: float, table):
     the end stays as it is."""
     if front.kind == FrontKind.BOUNDARY:
         spec = engine.scene.left if front.side == "left" else engine.scene.right
+        if spec.kind == BoundaryKind.VELOCITY and spec.bond != "bonded":
+            # a piston may separate from its face: each reflection there is an event that
+            # checks for it (``interactions._piston``)
+            return moc.Bound(front.x0, front.t0, 0.0), math.inf
         value = interactions.boundary_value(front, spec, t)
         holds = "stress" if spec.kind in (BoundaryKind.FREE, BoundaryKind.STRESS) else "velocity"
         return moc.Reflector(front.x0, holds, value), interactions.next_step_time(front, t)

@@ -259,3 +259,41 @@ def test_a_gas_expanded_to_vacuum_meets_its_neighbours_as_a_free_surface():
     vacuum = [r for r in solution.regions if r.state.v == float("inf")]
     assert vacuum and all(r.state.sigma == 0.0 for r in vacuum)
     assert solution.accuracy_report["balance"]["momentum_error"] < 0.01
+
+
+# --- a velocity boundary is a piston --------------------------------------------------
+def _piston_scene(history, bond="unbonded"):
+    from fronttrack.scene import Layer, Scene
+    return Scene(layers=(Layer(get("Al2024"), 10e-3),), t_end=0.9e-6,
+                 left=Boundary("velocity", history, bond), right=Boundary("free"))
+
+
+PULL = ((0.0, 200.0), (0.3e-6, 200.0), (0.3e-6, -100.0), (0.5e-6, -100.0), (0.5e-6, 400.0))
+
+
+def test_a_piston_that_pulls_away_separates_and_strikes_again_when_it_catches_up():
+    from fronttrack.kinds import EventKind
+    from materials import solve_boundary
+    solution = run(_piston_scene(PULL))
+    gaps = [e for e in solution.events if e.kind in (EventKind.GAP_OPEN, EventKind.GAP_CLOSE)]
+    assert [e.kind for e in gaps] == [EventKind.GAP_OPEN, EventKind.GAP_CLOSE]
+    assert gaps[0].t == pytest.approx(0.3e-6, rel=1e-12)
+    # the face unloads to a free surface from the state the piston drove
+    al = get("Al2024")
+    driven = solve_boundary(al, al.reference_state(), "left", velocity=200.0).right_star
+    face = solve_boundary(al, driven, "left", stress=0.0).right_star.u
+    assert solution.state_at(0.0, 0.4e-6).sigma == 0.0
+    assert solution.state_at(0.0, 0.4e-6).u == pytest.approx(face, abs=1e-9)
+    # apart from 0.3 us at (face + 100 m/s); from 0.5 us the piston closes at 400 - face
+    width = (face + 100.0) * 0.2e-6
+    assert gaps[1].t == pytest.approx(0.5e-6 + width / (400.0 - face), rel=1e-12)
+    assert solution.state_at(0.0, 0.8e-6).u == 400.0
+    assert min(r.state.sigma for r in solution.regions) > -solution.accuracy_report[
+        "negligible_stress"]
+    assert solution.accuracy_report["warnings"] == []
+
+
+def test_a_bonded_piston_pulls_the_material_into_tension():
+    solution = run(_piston_scene(PULL[:4], bond="bonded"))
+    assert solution.state_at(0.0, 0.4e-6).u == -100.0
+    assert solution.state_at(0.0, 0.4e-6).sigma < -1e9

@@ -224,7 +224,7 @@ def test_load_scene_file_errors(tmp_path):
     (doc_with(accuracy={"rays_per_fans": 8}), ["accuracy.rays_per_fans: unknown key",
                                                 "did you mean 'rays_per_fan'?"]),
     (doc_with(left={"knd": "free"}), ["left.knd: unknown key (allowed keys: kind, value, "
-                                      "history)"]),
+                                      "history, bond)"]),
     (doc_with(probe=[{"name": "p", "position": "1 mm"}]), ["probe[0].position: unknown key"]),
     (doc_with(materials={"X": {"model": "ideal-gas", "gamma": 1.4, "rho0": "1 kg/m3",
                                "rho00": "1 kg/m3"}}),
