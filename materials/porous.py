@@ -145,8 +145,16 @@ class PorousSolid(Material):
 
     # --- distension and the crush curve --------------------------------------------------
     def distension(self, state: State) -> float:
-        """``alpha = alpha0 (1 - plastic_strain)`` of a state (>= 1)."""
-        return self.alpha0 * (1.0 - state.plastic_strain)
+        """``alpha = alpha0 (1 - plastic_strain)`` of a state; within rounding of 1 it is 1
+        (the fully dense matrix), and it is never above ``alpha0``."""
+        alpha = self.alpha0 * (1.0 - state.plastic_strain)
+        if alpha <= 1.0 + 4.0 * _EPS * self.alpha0:
+            return 1.0
+        if alpha > self.alpha0 * (1.0 + 4.0 * _EPS):
+            raise StateOutOfRangeError(
+                f"{self.name}: plastic_strain {state.plastic_strain!r} is negative; the "
+                f"compaction strain 1 - alpha/alpha0 is in [0, 1 - 1/alpha0]")
+        return min(alpha, self.alpha0)
 
     def compaction_strain(self, alpha: float) -> float:
         """``1 - alpha/alpha0``: the ``plastic_strain`` of a state of distension ``alpha``."""
@@ -287,10 +295,6 @@ class PorousWaveCurve(StressRange):
         self.direction = direction
         self.release = release
         self.alpha = material.distension(ahead)
-        if not self.alpha >= 1.0 - 1e-12:
-            raise StateOutOfRangeError(f"{material.name}: plastic_strain "
-                                       f"{ahead.plastic_strain!r} gives a distension "
-                                       f"{self.alpha!r} below 1")
         self.speed_factor = material.alpha0 / self.alpha
         self.matrix = material.solid.wave_curve(material.matrix_state(ahead), direction,
                                                 release)
