@@ -4,7 +4,8 @@
 (SI values: ``rho0`` kg/m^3, ``c0`` m/s, ``s`` and ``gamma0`` dimensionless, ``cv``
 J/(kg K), ``spall_strength`` Pa, ``up_max`` m/s) with a description, aliases and
 the source of each number; ``materials/data/porous.toml`` holds porous solids (their
-matrix's fit, distension and crush curve), read after it.  ``get(name)`` builds the
+matrix's fit, distension and crush curve) and ``phase_change.toml`` solids with a
+polymorphic transition, read after it.  ``get(name)`` builds the
 material of an entry (a name is its table key, or any alias, matched without regard to case), and
 ``material_from_spec`` builds any model from a dict of SI floats: this is the
 one place where specification fields are mapped to constructor arguments, for
@@ -37,6 +38,10 @@ Models and fields (``MODELS``):
   ``crush_scale`` (Pa, exponential), and ``spall_strength``.  Without a crush curve
   every compression compacts fully (the strong-shock model of Davison §11.2).
 
+- ``"phase-change"``: the two-phase solid of ``materials.phase_change``: ``rho0``,
+  ``c1``, ``s1`` (low-pressure phase), ``c2``, ``s2`` (high-pressure phase),
+  ``transition_stress`` (Pa) and ``transition_strain``; optional ``spall_strength``.
+
 A solid without ``spall_strength`` never spalls (``math.inf``).  ``description``
 and ``source`` (strings) may accompany any specification and are not used.
 """
@@ -57,6 +62,7 @@ from .finite_plastic import FinitePlastic
 from .ideal_gas import IdealGas
 from .linear_elastic import LinearElastic
 from .mie_gruneisen import MieGruneisen
+from .phase_change import PhaseChangeSolid
 from .porous import PorousSolid
 
 MODELS: dict[str, dict[str, tuple[str, ...]]] = {
@@ -70,6 +76,9 @@ MODELS: dict[str, dict[str, tuple[str, ...]]] = {
     "finite-plastic": {"required": ("rho0", "c0", "s", "gamma0", "yield_strength"),
                        "optional": ("shear_modulus", "poisson", "hardening",
                                     "spall_strength")},
+    "phase-change": {"required": ("rho0", "c1", "s1", "c2", "s2", "transition_stress",
+                                  "transition_strain"),
+                     "optional": ("spall_strength",)},
     "porous": {"required": ("solid_rho0", "c0", "s", "gamma0", "alpha0"),
                "optional": ("crush_stress", "compaction_stress", "crush_exponent",
                             "crush_scale", "spall_strength")},
@@ -86,7 +95,9 @@ FIELD_DIMENSIONS: dict[str, str] = {
     "poisson": "dimensionless", "gamma": "dimensionless", "yield_strength": "stress",
     "shear_modulus": "stress", "hardening": "stress", "solid_rho0": "density",
     "alpha0": "dimensionless", "crush_stress": "stress", "compaction_stress": "stress",
-    "crush_exponent": "dimensionless", "crush_scale": "stress",
+    "crush_exponent": "dimensionless", "crush_scale": "stress", "c1": "velocity",
+    "s1": "dimensionless", "c2": "velocity", "s2": "dimensionless",
+    "transition_stress": "stress", "transition_strain": "dimensionless",
 }
 """Physical dimension of every numeric specification field, for readers of files
 that write quantities with units (the dimension names of ``fronttrack.units``)."""
@@ -98,7 +109,7 @@ _LIBRARY_ONLY_FIELDS = ("aliases",)
 
 
 # --- the library file ----------------------------------------------------------------
-DATA_FILES = ("library.toml", "porous.toml")
+DATA_FILES = ("library.toml", "porous.toml", "phase_change.toml")
 """The library's data files, read in this order."""
 
 
@@ -217,6 +228,11 @@ def material_from_spec(name: str, spec: dict[str, Any]) -> Material:
         return _finite_plastic(name, values)
     if model == "porous":
         return _porous(name, values)
+    if model == "phase-change":
+        return PhaseChangeSolid(name, values["rho0"], values["c1"], values["s1"], values["c2"],
+                                values["s2"], values["transition_stress"],
+                                values["transition_strain"],
+                                spall_strength=values.get("spall_strength", math.inf))
     return IdealGas(name, values["gamma"], values["rho0"], cv=values.get("cv"))
 
 
