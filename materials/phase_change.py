@@ -201,23 +201,25 @@ class PhaseChangeSolid(Material):
             return self.mixed.strain(sigma)
         return self.high.strain(sigma)
 
+    def _along(self, eps: float, quantity: str) -> float:
+        """Sum over the branches from 0 to ``eps`` of the branch integral ``quantity``
+        ("riemann" or "work"), each taken between its own ends."""
+        total = 0.0
+        for piece, lo, hi in ((self.low, -math.inf, self.eps_a),
+                              (self.mixed, self.eps_a, self.eps_b),
+                              (self.high, self.eps_b, math.inf)):
+            start, end = max(min(0.0, hi), lo), max(min(eps, hi), lo)
+            if end != start:
+                total += getattr(piece, quantity)(end) - getattr(piece, quantity)(start)
+        return total
+
     def riemann(self, eps: float) -> float:
         """``G(eps) = int_0^eps sqrt(sigma'/rho0) d eps`` along the path (m/s)."""
-        g = self.low.riemann(min(eps, self.eps_a)) - self.low.riemann(0.0)
-        if eps > self.eps_a:
-            g += self.mixed.riemann(min(eps, self.eps_b)) - self.mixed.riemann(self.eps_a)
-        if eps > self.eps_b:
-            g += self.high.riemann(eps) - self.high.riemann(self.eps_b)
-        return g
+        return self._along(eps, "riemann")
 
     def work(self, eps: float) -> float:
         """``int_0^eps sigma d eps`` along the path (Pa)."""
-        w = self.low.work(min(eps, self.eps_a)) - self.low.work(0.0)
-        if eps > self.eps_a:
-            w += self.mixed.work(min(eps, self.eps_b)) - self.mixed.work(self.eps_a)
-        if eps > self.eps_b:
-            w += self.high.work(eps) - self.high.work(self.eps_b)
-        return w
+        return self._along(eps, "work")
 
     def dissipated_energy(self, state: State) -> float:
         """Energy above the reversible path from the virgin state (J/kg):
