@@ -9,6 +9,7 @@ from __future__ import annotations
 import math
 import random
 
+import numpy as np
 import pytest
 from engine_helpers import assert_no_nan, assert_shock_jumps
 from scipy.integrate import quad
@@ -17,6 +18,7 @@ from scipy.optimize import brentq
 from fronttrack.runner import run
 from fronttrack.scene import Accuracy, Boundary, Layer, Scene
 from materials import LEFT, RIGHT, Fan, MaterialError, Shock, get, material_from_spec
+from materials.finite_plastic import concave_hull_waves
 from materials.phase_change import PhaseChangeSolid
 
 RHO, C1, S1, C2, S2 = 7850.0, 4630.0, 1.57, 3574.0, 1.92
@@ -187,3 +189,27 @@ def solve_symmetric(fe) -> float:
         return u1 + math.sqrt((sigma - SIGMA_T) * (eps - EPS_A) / RHO) - 500.0
 
     return EPSILON(brentq(mismatch, EPS_B, 0.3, xtol=1e-16, rtol=1e-15))
+
+
+def test_hull_agrees_with_the_sampled_construction():
+    """The exact hull against ``concave_hull_waves`` on 40 001 samples of the path: the
+    P1 and P2 speeds on loading to 20 GPa; on release from 25 GPa to zero (the lower
+    hull, as the upper hull of ``-sigma`` against ``-eps``) a fan then one chord."""
+    fe = iron()
+    eps_top = brentq(lambda e: EPSILON(e) - 20e9, EPS_B, 0.4, xtol=1e-16, rtol=1e-15)
+    eps = np.union1d(np.linspace(0.0, eps_top, 40001), [EPS_A, EPS_B])
+    sigma = np.array([fe.path_stress(x) for x in eps])
+    kinds = concave_hull_waves(eps, sigma, RHO)
+    p1, p2 = fe.wave_curve(fe.reference_state(), RIGHT).waves(20e9)
+    assert [k["kind"] for k in kinds] == ["shock", "shock"]
+    assert kinds[0]["speeds"][0] == pytest.approx(p1.speed, rel=1e-12)
+    assert kinds[1]["speeds"][0] == pytest.approx(p2.speed, rel=1e-12)
+    top = fe.wave_curve(fe.reference_state(), RIGHT).state_at(25e9)
+    eps_top = 1.0 - top.v * RHO
+    eps = np.union1d(np.linspace(0.0, eps_top, 40001), [EPS_A, EPS_B])
+    sigma = np.array([fe.path_stress(x) for x in eps])
+    pieces = concave_hull_waves(-eps[::-1], -sigma[::-1], RHO)
+    fan, shock = fe.wave_curve(top, LEFT).waves(0.0)
+    assert [p["kind"] for p in pieces] == ["fan", "shock"]
+    assert pieces[0]["speeds"][0] == pytest.approx(abs(fan.head_speed), rel=1e-3)
+    assert pieces[1]["speeds"][0] == pytest.approx(abs(shock.speed), rel=1e-9)
