@@ -312,3 +312,36 @@ def test_engine_impact_on_copper_powder():
     assert [f.speed for f in fronts] == pytest.approx([precursor.speed, compaction.speed],
                                                       rel=1e-12)
     assert fronts[0].jump == pytest.approx(powder.crush_stress, rel=1e-12)
+
+
+def test_scene_file_inline_porous_material_with_units():
+    """A ``[materials.NAME]`` table of model "porous" with units gives the library's body."""
+    import tomllib
+
+    from fronttrack.scene_file import scene_from_dict
+
+    doc = tomllib.loads('''
+        title = "powder"
+        t_end = "1 us"
+        [materials.powder]
+        model = "porous"
+        solid_rho0 = "8.93 g/cm3"
+        c0 = "3.94 km/s"
+        s = 1.489
+        gamma0 = 2.02
+        alpha0 = 1.3953125
+        crush_stress = "1.4 kbar"
+        crush_scale = "0.3937 GPa"
+        [[layer]]
+        material = "powder"
+        thickness = "1 mm"
+        [left]
+        kind = "free"
+        [right]
+        kind = "free"
+    ''')
+    body = scene_from_dict(doc).layers[0].material
+    library = get("Cu_powder")
+    assert body.rho0 == pytest.approx(library.rho0, rel=1e-15)
+    assert body.crush_stress == pytest.approx(library.crush_stress, rel=1e-15)
+    assert body.crush_alpha(1e9) == pytest.approx(library.crush_alpha(1e9), rel=1e-14)
