@@ -164,7 +164,6 @@ def test_symmetric_impact_free_surface_three_arrivals():
                   accuracy=Accuracy(rays_per_fan=4, max_events=4000))
     solution = run(scene)
     assert_no_nan(solution)
-    assert assert_shock_jumps(solution) > 0
     record = solution.history("right")
     times, velocities = list(record.t), list(record.u)
     u1 = math.sqrt(SIGMA_T * EPS_A / RHO)
@@ -213,3 +212,19 @@ def test_hull_agrees_with_the_sampled_construction():
     assert [p["kind"] for p in pieces] == ["fan", "shock"]
     assert pieces[0]["speeds"][0] == pytest.approx(abs(fan.head_speed), rel=1e-3)
     assert pieces[1]["speeds"][0] == pytest.approx(abs(shock.speed), rel=1e-9)
+
+
+def test_energy_balance_keeps_the_energy_jumps_at_contacts():
+    """All shocks (``release = "hugoniot"``): momentum to rounding and energy to the
+    negligible stress.  Two states of one stress have one volume here, so an entropy
+    contact is an energy jump alone; merging it put shocks off their Hugoniots (1.6 %
+    of the energy lost in this scene before the engine kept such contacts)."""
+    fe = iron()
+    scene = Scene(layers=(Layer(fe, 0.5e-3, 1000.0), Layer(fe, 2.0e-3, 0.0, bond="unbonded")),
+                  left=Boundary("free"), right=Boundary("free"), t_end=0.75e-6,
+                  accuracy=Accuracy(release="hugoniot", max_events=2000))
+    solution = run(scene)
+    assert assert_shock_jumps(solution) > 0
+    balance = solution.conservation()
+    assert balance["momentum_relative_error"] < 1e-9
+    assert balance["energy_relative_error"] < 2e-4
