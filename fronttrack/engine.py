@@ -408,7 +408,10 @@ class Engine:
         """
         counters, res = self.counters, self.resolution
         jump = abs(left.v - right.v) / max(left.v, right.v)
-        keep = self.acc.entropy_contacts and jump > ENTROPY_JUMP_TOLERANCE
+        # where the stress does not depend on the energy (a two-phase solid's path) two
+        # states of one stress have one volume: their entropy jump is in the energy alone
+        heat = material.rho0 * abs(left.e - right.e) / res.stress_scale
+        keep = self.acc.entropy_contacts and max(jump, heat) > ENTROPY_JUMP_TOLERANCE
         if keep and res.negligible > 0.0 and math.isfinite(left.v + right.v):
             keep = (material.contact_reflection(left, right, res.stress_scale) > res.negligible
                     or material.rho0 * abs(left.e - right.e) > res.negligible)

@@ -13,6 +13,8 @@ from .ideal_gas import IdealGas
 from .library import available, get, material_from_spec
 from .linear_elastic import LinearElastic
 from .mie_gruneisen import MieGruneisen
+from .phase_change import PhaseChangeSolid, PhaseChangeWaveCurve
+from .porous import PorousSolid, PorousWaveCurve
 from .riemann import RiemannSolution, solve_boundary, solve_contact
 from .state import LEFT, RIGHT, State
 from .waves import Fan, Shock
@@ -21,6 +23,7 @@ __all__ = [
     "LEFT", "RIGHT", "ElasticPlastic", "ElasticPlasticWaveCurve", "Fan", "FinitePlastic",
     "FinitePlasticWaveCurve", "IdealGas",
     "LinearElastic", "Material", "MaterialError", "MieGruneisen", "NoSolutionError",
+    "PhaseChangeSolid", "PhaseChangeWaveCurve", "PorousSolid", "PorousWaveCurve",
     "RiemannSolution", "Shock", "State", "StateOutOfRangeError", "available", "get",
     "material_from_spec", "solve_boundary", "solve_contact", "WavediagramError",
 ]

@@ -3,8 +3,10 @@
 ``materials/data/library.toml`` holds Mie–Grüneisen solids on linear Us–up fits
 (SI values: ``rho0`` kg/m^3, ``c0`` m/s, ``s`` and ``gamma0`` dimensionless, ``cv``
 J/(kg K), ``spall_strength`` Pa, ``up_max`` m/s) with a description, aliases and
-the source of each number.  ``get(name)`` builds the material of an entry (a
-name is its table key, or any alias, matched without regard to case), and
+the source of each number; ``materials/data/porous.toml`` holds porous solids (their
+matrix's fit, distension and crush curve) and ``phase_change.toml`` solids with a
+polymorphic transition, read after it.  ``get(name)`` builds the
+material of an entry (a name is its table key, or any alias, matched without regard to case), and
 ``material_from_spec`` builds any model from a dict of SI floats: this is the
 one place where specification fields are mapped to constructor arguments, for
 library entries and for materials defined inline in scene files alike.
@@ -28,6 +30,18 @@ Models and fields (``MODELS``):
   ``Y = Y0 + H eps_bar``) and ``spall_strength``.  The finite-deformation
   elastic–plastic solid of ``materials.finite_plastic``.
 
+- ``"porous"``: the p–α porous solid of ``materials.porous`` on a Mie–Grüneisen
+  matrix: ``solid_rho0`` (the matrix density, kg/m^3), ``c0``, ``s``, ``gamma0`` (the
+  matrix's fit) and ``alpha0`` (distension, >= 1; the body's density is
+  ``solid_rho0 / alpha0``); optional ``crush_stress`` (Pa, default 0), then
+  ``compaction_stress`` (Pa) with ``crush_exponent`` (power-law crush curve) or
+  ``crush_scale`` (Pa, exponential), and ``spall_strength``.  Without a crush curve
+  every compression compacts fully (the strong-shock model of Davison §11.2).
+
+- ``"phase-change"``: the two-phase solid of ``materials.phase_change``: ``rho0``,
+  ``c1``, ``s1`` (low-pressure phase), ``c2``, ``s2`` (high-pressure phase),
+  ``transition_stress`` (Pa) and ``transition_strain``; optional ``spall_strength``.
+
 A solid without ``spall_strength`` never spalls (``math.inf``).  ``description``
 and ``source`` (strings) may accompany any specification and are not used.
 """
@@ -48,6 +62,8 @@ from .finite_plastic import FinitePlastic
 from .ideal_gas import IdealGas
 from .linear_elastic import LinearElastic
 from .mie_gruneisen import MieGruneisen
+from .phase_change import PhaseChangeSolid
+from .porous import PorousSolid
 
 MODELS: dict[str, dict[str, tuple[str, ...]]] = {
     "mie-gruneisen": {"required": ("rho0", "c0", "s", "gamma0"),
@@ -60,6 +76,12 @@ MODELS: dict[str, dict[str, tuple[str, ...]]] = {
     "finite-plastic": {"required": ("rho0", "c0", "s", "gamma0", "yield_strength"),
                        "optional": ("shear_modulus", "poisson", "hardening",
                                     "spall_strength")},
+    "phase-change": {"required": ("rho0", "c1", "s1", "c2", "s2", "transition_stress",
+                                  "transition_strain"),
+                     "optional": ("spall_strength",)},
+    "porous": {"required": ("solid_rho0", "c0", "s", "gamma0", "alpha0"),
+               "optional": ("crush_stress", "compaction_stress", "crush_exponent",
+                            "crush_scale", "spall_strength")},
 }
 """Numeric fields of each model (a linear-elastic solid also needs one of its
 stiffness choices, see ``_LINEAR_ELASTIC_CHOICES``)."""
@@ -71,7 +93,11 @@ FIELD_DIMENSIONS: dict[str, str] = {
     "cv": "specific_heat", "spall_strength": "stress", "up_max": "velocity",
     "C": "velocity", "lambda": "stress", "mu": "stress", "E": "stress",
     "poisson": "dimensionless", "gamma": "dimensionless", "yield_strength": "stress",
-    "shear_modulus": "stress", "hardening": "stress",
+    "shear_modulus": "stress", "hardening": "stress", "solid_rho0": "density",
+    "alpha0": "dimensionless", "crush_stress": "stress", "compaction_stress": "stress",
+    "crush_exponent": "dimensionless", "crush_scale": "stress", "c1": "velocity",
+    "s1": "dimensionless", "c2": "velocity", "s2": "dimensionless",
+    "transition_stress": "stress", "transition_strain": "dimensionless",
 }
 """Physical dimension of every numeric specification field, for readers of files
 that write quantities with units (the dimension names of ``fronttrack.units``)."""
@@ -83,11 +109,22 @@ _LIBRARY_ONLY_FIELDS = ("aliases",)
 
 
 # --- the library file ----------------------------------------------------------------
+DATA_FILES = ("library.toml", "porous.toml", "phase_change.toml")
+"""The library's data files, read in this order."""
+
+
 @functools.cache
 def _library() -> dict[str, dict[str, Any]]:
-    """The parsed library file, ``{name: entry}`` in file order (read once)."""
-    text = resources.files(__package__).joinpath("data/library.toml").read_text("utf-8")
-    return tomllib.loads(text)
+    """The parsed library files, ``{name: entry}`` in file order (read once); a name in
+    two files is a data error."""
+    merged: dict[str, dict[str, Any]] = {}
+    for file in DATA_FILES:
+        text = resources.files(__package__).joinpath(f"data/{file}").read_text("utf-8")
+        for key, data in tomllib.loads(text).items():
+            if key in merged:
+                raise MaterialError(f"{file}: {key!r} is already a library entry")
+            merged[key] = data
+    return merged
 
 
 @functools.cache
@@ -104,9 +141,11 @@ def _lookup() -> dict[str, str]:
     return index
 
 
-def available() -> list[str]:
-    """Names (table keys) of the library materials, in the file's order."""
-    return list(_library())
+def available(model: str | None = None) -> list[str]:
+    """Names (table keys) of the library materials, in the files' order; only those of
+    ``model`` (a key of ``MODELS``) when it is given."""
+    return [key for key, data in _library().items()
+            if model is None or data.get("model") == model]
 
 
 def _resolve(name: str) -> str:
@@ -187,6 +226,13 @@ def material_from_spec(name: str, spec: dict[str, Any]) -> Material:
                               spall_strength=values.get("spall_strength", math.inf))
     if model == "finite-plastic":
         return _finite_plastic(name, values)
+    if model == "porous":
+        return _porous(name, values)
+    if model == "phase-change":
+        return PhaseChangeSolid(name, values["rho0"], values["c1"], values["s1"], values["c2"],
+                                values["s2"], values["transition_stress"],
+                                values["transition_strain"],
+                                spall_strength=values.get("spall_strength", math.inf))
     return IdealGas(name, values["gamma"], values["rho0"], cv=values.get("cv"))
 
 
@@ -203,6 +249,18 @@ def _finite_plastic(name: str, values: dict[str, float]) -> FinitePlastic:
         return FinitePlastic.from_poisson(name, *args, values["poisson"],
                                           values["yield_strength"], **rest)
     return FinitePlastic(name, *args, values["shear_modulus"], values["yield_strength"], **rest)
+
+
+def _porous(name: str, values: dict[str, float]) -> PorousSolid:
+    """A p–α porous solid on a Mie–Grüneisen matrix named ``<name> matrix``."""
+    solid = MieGruneisen(f"{name} matrix", values["solid_rho0"], values["c0"], values["s"],
+                         values["gamma0"])
+    return PorousSolid(name, solid, values["alpha0"],
+                       crush_stress=values.get("crush_stress", 0.0),
+                       compaction_stress=values.get("compaction_stress"),
+                       crush_exponent=values.get("crush_exponent", 2.0),
+                       crush_scale=values.get("crush_scale"),
+                       spall_strength=values.get("spall_strength", math.inf))
 
 
 def _number(name: str, field: str, value: Any) -> float:

@@ -24,7 +24,7 @@ def random_scene(seed: int) -> Scene:
     """2-4 layers, 50 µm to 3 mm, a flyer at -300 to 1500 m/s, bonded or unbonded,
     free or wall ends, 4 or 8 rays per fan, run for 0.5-2 transit times at 3 km/s."""
     rng = random.Random(seed)
-    names = available()
+    names = available("mie-gruneisen")
     layers = []
     for i in range(rng.randint(2, 4)):
         material = get(rng.choice(names))
