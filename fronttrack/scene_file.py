@@ -52,6 +52,7 @@ from .scene import (
     Scene,
     SceneError,
     SpallCriterion,
+    located,
 )
 from .units import parse_quantity
 
@@ -59,7 +60,7 @@ _TOP_KEYS = ("title", "t_end", "accuracy", "materials", "layer", "left", "right"
              "spall")
 _LAYER_KEYS = ("material", "thickness", "velocity", "stress", "name", "bond")
 _BOUNDARY_KEYS = ("kind", "value", "history")
-_PROBE_KEYS = ("name", "at")
+_PROBE_KEYS = ("name", "at", "kind", "side", "window")
 _ACCURACY_KEYS = ("rays_per_fan", "stress_tolerance", "velocity_tolerance",
                   "characteristic_step", "negligible_stress", "release",
                   "entropy_contacts", "max_events", "spall_spacing", "contact_resolution",
@@ -94,7 +95,7 @@ def scene_from_dict(doc: dict[str, Any], base_name: str = "") -> Scene:
     layer_tables = _array_of_tables(doc, "layer", required=True)
     layers = tuple(_layer(table, i, materials) for i, table in enumerate(layer_tables))
     probes = tuple(_probe(table, i) for i, table in enumerate(_array_of_tables(doc, "probe")))
-    scene = Scene(
+    return Scene(
         layers=layers,
         t_end=parse_quantity(doc["t_end"], "time", "t_end"),
         left=_boundary(doc.get("left", {}), "left"),
@@ -104,7 +105,6 @@ def scene_from_dict(doc: dict[str, Any], base_name: str = "") -> Scene:
         title=_string(doc, "title", "title", base_name),
         spall_criterion=_spall(_table(doc["spall"], "spall")) if "spall" in doc else None,
     )
-    return scene.validate()
 
 
 # --- structure -----------------------------------------------------------------------------
@@ -193,7 +193,8 @@ def _layer(table: dict[str, Any], index: int, inline: dict[str, Material]) -> La
     bond = _string(table, "bond", f"{path}.bond", "bonded")
     if index == 0 and "bond" in table:
         raise SceneError(f"{path}.bond: the first layer has no previous layer to bond to")
-    return Layer(
+    return _built(
+        path, "layer", Layer,
         material=material,
         thickness=parse_quantity(_required(table, "thickness", path), "length",
                                  f"{path}.thickness"),
@@ -221,13 +222,13 @@ def _boundary(table: Any, side: str) -> Boundary:
     if kind not in _BOUNDARY_DIMENSION:
         if given:
             raise SceneError(f"{side}.{given[0]}: a {kind} boundary takes no {given[0]}")
-        return Boundary(kind)
+        return _built(side, "boundary", Boundary, kind)
     if len(given) != 1:
         raise SceneError(f"{side}: a {kind} boundary needs exactly one of value or history")
     dimension = _BOUNDARY_DIMENSION[kind]
     if "value" in table:
-        return Boundary(kind, ((0.0, parse_quantity(table["value"], dimension,
-                                                    f"{side}.value")),))
+        return _built(side, "boundary", Boundary, kind,
+                      ((0.0, parse_quantity(table["value"], dimension, f"{side}.value")),))
     points = table["history"]
     if not isinstance(points, list) or not points:
         raise SceneError(f'{side}.history: expected a list of [time, value] pairs such as '
@@ -239,7 +240,13 @@ def _boundary(table: Any, side: str) -> Boundary:
             raise SceneError(f"{where}: expected a [time, value] pair, got {point!r}")
         history.append((parse_quantity(point[0], "time", f"{where} time"),
                         parse_quantity(point[1], dimension, f"{where} value")))
-    return Boundary(kind, tuple(history))
+    return _built(side, "boundary", Boundary, kind, tuple(history))
+
+
+def _built(path: str, prefix: str, cls: type, *args: Any, **kwargs: Any) -> Any:
+    """``cls(*args, **kwargs)``, its errors about ``prefix.*`` restated about ``path.*``."""
+    with located(prefix, path):
+        return cls(*args, **kwargs)
 
 
 def _probe(table: dict[str, Any], index: int) -> Probe:
@@ -248,7 +255,9 @@ def _probe(table: dict[str, Any], index: int) -> Probe:
     at = _required(table, "at", path)
     if at not in ("left", "right"):
         at = parse_quantity(at, "length", f"{path}.at")
-    return Probe(name=_string(table, "name", f"{path}.name"), at=at)
+    return _built(path, "probe", Probe, name=_string(table, "name", f"{path}.name"), at=at,
+                  kind=_string(table, "kind", f"{path}.kind", "point"),
+                  side=table.get("side"), window=table.get("window"))
 
 
 def _accuracy(table: dict[str, Any]) -> Accuracy:
