@@ -14,6 +14,8 @@ figure functions (``ft.plot_xt``, ``ft.xt_and_sigma_u``, ...) load matplotlib on
 first use, so importing ``fronttrack`` stays light.
 """
 
+import importlib
+
 from materials import MaterialError, State, StateOutOfRangeError, WavediagramError
 
 from .design import (
@@ -33,12 +35,13 @@ from .scene import Accuracy, Boundary, Layer, Probe, Scene, SpallCriterion
 from .scene_file import load_scene, scene_from_dict
 from .solution import History, Solution, SpallRecord
 from .units import parse_quantity, to_si
-from .windows import OpticalWindow, optical_window
+from .windows import OpticalWindow, WindowRecord, optical_window, window_record
 
-FIGURES = ("placed_labels", "plot_free_surface_velocity", "plot_histories", "plot_peak_stress",
-           "plot_profiles", "plot_sigma_u", "plot_sigma_v", "plot_xt", "save_standard_figures",
-           "xt_and_sigma_u")
-"""Figure functions of ``fronttrack.plotting``, imported on first use."""
+FIGURES = {name: "plotting" for name in (
+    "placed_labels", "plot_free_surface_velocity", "plot_histories", "plot_peak_stress",
+    "plot_profiles", "plot_sigma_u", "plot_sigma_v", "plot_xt", "save_standard_figures",
+    "xt_and_sigma_u")} | {"plot_window_velocity": "window_figure"}
+"""Figure functions and the module that holds each, imported on first use."""
 
 __all__ = [
     "Accuracy", "Boundary", "History", "Layer", "MatchRow", "MaterialError", "OpticalWindow",
@@ -46,16 +49,15 @@ __all__ = [
     "StateOutOfRangeError", "WavediagramError", "Window", "WindowChoice", "flyer_for_spall",
     "load_scene", "match", "material", "one_dimensional_window", "optical_window",
     "parse_quantity", "run", "scene_from_dict", "thickness_for_window", "to_si",
-    "velocity_for", "window_choice", *FIGURES,
+    "velocity_for", "window_choice", "window_record", "WindowRecord", *FIGURES,
 ]
 
 
 def __getattr__(name: str):
-    """The figure functions, imported from ``fronttrack.plotting`` when first asked for."""
+    """The figure functions, imported (with matplotlib) when first asked for."""
     if name in FIGURES:
-        from . import plotting
-
-        return getattr(plotting, name)
+        module = importlib.import_module(f"{__name__}.{FIGURES[name]}")
+        return getattr(module, name)
     raise AttributeError(f"module 'fronttrack' has no attribute {name!r}")
 
 

@@ -31,6 +31,7 @@ from materials import State
 
 from .fronts import UNKNOWN, FrontRecord, RegionRecord
 from .kinds import FrontKind
+from .windows import window_record
 
 
 @dataclass(frozen=True)
@@ -654,7 +655,7 @@ class Solution:
             doc["probes"] = {
                 name: {"at": _probe_at(p), "t": h.t.tolist(), "sigma": h.sigma.tolist(),
                        "u": h.u.tolist(), "sigma_end": h.sigma_end.tolist(),
-                       "u_end": h.u_end.tolist()}
+                       "u_end": h.u_end.tolist()} | _window_fields(self, p)
                 for (name, h), p in zip(self.probe_histories().items(), self.scene.probes,
                                         strict=True)
             }
@@ -688,6 +689,18 @@ def _state_in(record: History, x: float) -> State:
 
 def _finite_or_none(value: float):
     return value if math.isfinite(value) else None
+
+
+def _window_fields(solution: Solution, probe) -> dict:
+    """The interferometer record of a probe behind an optical window (``{}`` without one):
+    samples ``t`` (s) of the true ``u`` and apparent ``u_apparent`` velocity (m/s)."""
+    if probe.window is None:
+        return {}
+    record = window_record(solution, probe.name)
+    return {"window": {"name": record.window.name, "a": record.window.a,
+                       "b": record.window.b, "source": record.window.source,
+                       "t": record.t.tolist(), "u": record.u.tolist(),
+                       "u_apparent": record.u_apparent.tolist()}}
 
 
 def _probe_at(probe):

@@ -89,3 +89,74 @@ def optical_window(window: str | OpticalWindow) -> OpticalWindow:
     raise SceneError(f"window: no refractive-index fit for {window!r} (cited fits: "
                      f"{', '.join(WINDOWS)}); give an OpticalWindow(name, a, b, wavelength, "
                      f"material, source) with the coefficients of n = a + b rho/rho0")
+
+
+@dataclass(frozen=True)
+class WindowRecord:
+    """What an interferometer behind a window records at an interface probe.
+
+    Both records are linear between consecutive samples and jump where two
+    samples share a time (``History.samples`` style): ``t`` (s), the interface
+    velocity ``u`` and the apparent velocity ``u_apparent`` (m/s, positive toward
+    +X), with the far face's velocity ``u_far`` (m/s) that enters it.
+    """
+
+    probe: str
+    window: OpticalWindow
+    t: np.ndarray
+    u: np.ndarray
+    u_far: np.ndarray
+    u_apparent: np.ndarray
+
+
+def window_layer(scene, probe) -> tuple[int, float]:
+    """Index of the layer an interface probe looks through, and its far face's X (m)."""
+    x = {"left": 0.0, "right": scene.length}.get(probe.at, probe.at)
+    edges = [0.0, *scene.interfaces(), scene.length]
+    k = min(range(len(edges)), key=lambda i: abs(edges[i] - x))
+    layer = k if probe.side == "right" else k - 1
+    return layer, edges[layer + 1] if probe.side == "right" else edges[layer]
+
+
+def window_record(solution, name: str) -> WindowRecord:
+    """The true and apparent velocity at the interface probe ``name`` (which has a window).
+
+    ``u_app = a u_i + (1 - a) u_far`` on the union of the break points of the
+    interface's and the far face's records, where both are linear: exact
+    wherever those records are.
+    """
+    probe = next(p for p in solution.scene.probes if p.name == name)
+    if probe.window is None:
+        raise SceneError(f"probe[{name}].window: the probe has no optical window")
+    _, far = window_layer(solution.scene, probe)
+    interface, far_face = solution.history(probe.at), solution.history(far)
+    grid = np.union1d(interface.t, far_face.t)
+    grid = grid[grid < interface.stop]
+    u0, u1 = _pieces(interface, grid)
+    f0, f1 = _pieces(far_face, grid)
+    t = np.repeat(np.append(grid, interface.stop), 2)[1:-1]
+    u = np.column_stack([u0, u1]).ravel()
+    u_far = np.column_stack([f0, f1]).ravel()
+    return WindowRecord(probe=name, window=probe.window, t=t, u=u, u_far=u_far,
+                        u_apparent=probe.window.apparent_velocity(u, u_far))
+
+
+def _pieces(history, grid: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Velocity at the start and at the end of each piece ``[grid[j], grid[j + 1]]``.
+
+    Every piece lies inside one piece of ``history`` (``grid`` holds its break
+    points), where the record is linear.
+    """
+    starts = np.array([s.u for s in history.states])
+    ends = np.array([s.u for s in history.ends])
+    right = np.append(history.t[1:], history.stop)
+    k = np.clip(np.searchsorted(history.t, grid, side="right") - 1, 0, len(history.t) - 1)
+    upper = np.append(grid[1:], history.stop)
+    width = right[k] - history.t[k]
+    safe = np.where(width > 0.0, width, 1.0)
+
+    def value(at: np.ndarray) -> np.ndarray:
+        f = np.where(width > 0.0, (at - history.t[k]) / safe, 0.0)
+        return starts[k] + f * (ends[k] - starts[k])
+
+    return value(grid), value(upper)
