@@ -34,6 +34,7 @@ from .runner import run
 from .scene import Accuracy, Boundary, Layer, Probe, Scene, SpallCriterion
 from .scene_file import load_scene, scene_from_dict
 from .solution import History, Solution, SpallRecord
+from .sweep import MonteCarlo, Table, monte_carlo, sweep
 from .units import parse_quantity, to_si
 from .windows import OpticalWindow, WindowRecord, optical_window, window_record
 
@@ -49,7 +50,8 @@ __all__ = [
     "StateOutOfRangeError", "WavediagramError", "Window", "WindowChoice", "flyer_for_spall",
     "load_scene", "match", "material", "one_dimensional_window", "optical_window",
     "parse_quantity", "run", "scene_from_dict", "thickness_for_window", "to_si",
-    "velocity_for", "window_choice", "window_record", "WindowRecord", *FIGURES,
+    "velocity_for", "window_choice", "window_record", "WindowRecord", "sweep", "monte_carlo",
+    "Table", "MonteCarlo", *FIGURES,
 ]
 
 
