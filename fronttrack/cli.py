@@ -3,6 +3,7 @@
     wavediagram demo [-o DIR]                 built-in plate-impact scene -> annotated figures
     wavediagram run SCENE.toml [-o DIR] [--json FILE] [--no-figures]
     wavediagram match FLYER VELOCITY LAYER... [--json FILE] [--mirrored] [--release PATH]
+    wavediagram sweep SCENE.toml --set PATH=VALUES... -o DIR [--quantity NAME]...
     wavediagram materials
 
 Bad input (a malformed scene, an unknown material, a quantity without units, a
@@ -22,6 +23,7 @@ from pathlib import Path
 
 from materials import WavediagramError, library
 
+from .cli_sweep import add_sweep_command
 from .impedance_match import format_table, impedance_match, to_json_dict
 from .runner import run
 from .scene_file import load_scene
@@ -77,6 +79,8 @@ def _parser() -> argparse.ArgumentParser:
                        help="use the mirrored-Hugoniot shortcut for reflected waves "
                             "(labelled as such)")
     match.set_defaults(handler=_match)
+
+    add_sweep_command(commands)
 
     mats = commands.add_parser("materials", help="list the material library with sources")
     mats.set_defaults(handler=_materials)
