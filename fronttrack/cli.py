@@ -23,6 +23,7 @@ from pathlib import Path
 
 from materials import WavediagramError, library
 
+from .cli_exports import add_export_flags, check_export_flags, write_exports
 from .cli_sweep import add_sweep_command
 from .impedance_match import format_table, impedance_match, to_json_dict
 from .runner import run
@@ -66,6 +67,7 @@ def _parser() -> argparse.ArgumentParser:
     run_.add_argument("--quiet", action="store_true", help="no progress or summary output")
     run_.add_argument("--estimate-error", action="store_true",
                       help="run again at half the ray step and report the estimated error")
+    add_export_flags(run_)
     run_.set_defaults(handler=_run)
 
     match = commands.add_parser("match", help="impedance match a flyer onto a stack")
@@ -101,12 +103,14 @@ def _demo(args) -> int:
 
 def _run(args) -> int:
     scene = load_scene(args.scene)
+    check_export_flags(args)
     if args.estimate_error:
         scene = dataclasses.replace(
             scene, accuracy=dataclasses.replace(scene.accuracy, estimate_error=True))
     solution = _solve(scene, quiet=args.quiet)
     written = _write_outputs(solution, args.output, json_path=args.json,
-                             figures=not args.no_figures)
+                             figures=not args.no_figures, compact=args.json_compact)
+    written += write_exports(solution, args)
     if not args.quiet:
         for path in written:
             print(f"wrote {path}")
@@ -163,7 +167,7 @@ def _solve(scene, quiet: bool):
 
 
 def _write_outputs(solution, outdir: Path | None, json_path: Path | None,
-                   figures: bool) -> list[Path]:
+                   figures: bool, compact: bool = False) -> list[Path]:
     written = []
     if outdir is not None:
         outdir.mkdir(parents=True, exist_ok=True)
@@ -176,7 +180,8 @@ def _write_outputs(solution, outdir: Path | None, json_path: Path | None,
             written += save_standard_figures(solution, outdir)
     if json_path is not None:
         json_path.parent.mkdir(parents=True, exist_ok=True)
-        json_path.write_text(json.dumps(solution.to_dict(), separators=(",", ":")))
+        json_path.write_text(json.dumps(solution.to_dict(polygons=not compact),
+                                        separators=(",", ":")))
         written.append(json_path)
     return written
 

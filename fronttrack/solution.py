@@ -611,8 +611,9 @@ class Solution:
         return found.material if not isinstance(found, tuple) else found[0].material
 
     # --- export -------------------------------------------------------------------------
-    def to_dict(self, probes: bool = True) -> dict:
-        """A JSON-ready document of the solution (SI units)."""
+    def to_dict(self, probes: bool = True, polygons: bool = True) -> dict:
+        """A JSON-ready document of the solution (SI units); ``polygons=False`` leaves
+        out the regions' X–t polygons (most of a large run's document)."""
         regions = []
         for r in self.regions:
             s = r.state
@@ -623,8 +624,8 @@ class Solution:
                 "rho": 1.0 / s.v if s.v > 0 else None, "e": s.e,
                 "plastic_strain": s.plastic_strain,
                 "temperature": temperature, "t_start": r.t_start, "t_end": r.t_end,
-                "in_fan": r.in_fan, "polygon": [list(p) for p in r.polygon()],
-            })
+                "in_fan": r.in_fan,
+            } | ({"polygon": [list(p) for p in r.polygon()]} if polygons else {}))
         fronts = [{
             "id": f.id, "kind": str(f.kind), "x0": f.x0, "t0": f.t0, "x1": f.x1, "t1": f.t1,
             "speed": f.speed, "direction": f.direction, "jump": f.jump, "wave": f.wave,

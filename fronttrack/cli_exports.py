@@ -1,0 +1,55 @@
+"""Exports ``wavediagram run`` writes on request, beside its standard outputs.
+
+- ``--dt TIME``: every probe record also on a uniform time step,
+  ``probe_<name>_resampled.csv`` (``fronttrack.exports.resampled``);
+- ``--peaks``: peak stress, peak tension and impulse against depth,
+  ``peaks.csv`` and ``peaks.json`` (``--stations N`` of them);
+- ``--json-compact``: the solution JSON without region polygons (the bulk of a
+  large run's JSON).
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from .errors import SceneError
+from .exports import peak_table, resampled, write_csv, write_json
+from .units import parse_quantity
+
+
+def add_export_flags(parser) -> None:
+    """Add the export options to the ``run`` subcommand's ``parser``."""
+    parser.add_argument("--dt", default=None, metavar="TIME",
+                        help='also write each probe record every TIME, e.g. "10 ns"')
+    parser.add_argument("--peaks", action="store_true",
+                        help="write peak stress, tension and impulse against depth")
+    parser.add_argument("--stations", type=int, default=101,
+                        help="stations across the stack for --peaks (default: %(default)s)")
+    parser.add_argument("--json-compact", action="store_true",
+                        help="leave the region polygons out of the solution JSON")
+
+
+def check_export_flags(args) -> None:
+    """Refuse bad export options before the solve (``SceneError`` naming the option)."""
+    if args.dt is not None:
+        args.dt = parse_quantity(args.dt, "time", "--dt")
+        if not args.dt > 0.0:
+            raise SceneError(f"--dt: must be > 0 s, got {args.dt!r}")
+    if (args.dt is not None or args.peaks) and args.output is None:
+        raise SceneError("--dt and --peaks write into the output directory: give -o DIR")
+    if not 2 <= args.stations <= 100_000:
+        raise SceneError(f"--stations: must be in 2..100000, got {args.stations}")
+
+
+def write_exports(solution, args) -> list[Path]:
+    """Write the exports ``args`` asks for into ``args.output``; return the paths."""
+    written = []
+    if args.dt is not None:
+        for name, history in solution.probe_histories().items():
+            written.append(write_csv(resampled(history, args.dt),
+                                     args.output / f"probe_{name}_resampled.csv"))
+    if args.peaks:
+        table = peak_table(solution, args.stations)
+        written.append(write_csv(table, args.output / "peaks.csv"))
+        written.append(write_json(table, args.output / "peaks.json"))
+    return written
