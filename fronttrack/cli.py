@@ -23,13 +23,17 @@ from pathlib import Path
 
 from materials import WavediagramError, library
 
-from .cli_exports import add_export_flags, check_export_flags, write_exports
+from .cli_exports import (
+    add_export_flags,
+    check_export_flags,
+    write_exports,
+    write_window_records,
+)
 from .cli_sweep import add_sweep_command
 from .impedance_match import format_table, impedance_match, to_json_dict
 from .runner import run
 from .scene_file import load_scene
 from .units import parse_quantity
-from .windows import window_record
 
 USER_ERRORS = (WavediagramError, FileNotFoundError)
 """Errors that are the input's fault: reported on one line, exit status 2."""
@@ -173,7 +177,7 @@ def _write_outputs(solution, outdir: Path | None, json_path: Path | None,
         outdir.mkdir(parents=True, exist_ok=True)
         json_path = json_path or outdir / "solution.json"
         written += _write_probe_csvs(solution, outdir)
-        written += _write_window_records(solution, outdir, figures)
+        written += write_window_records(solution, outdir, figures)
         if figures:
             from .plotting.figures import save_standard_figures
 
@@ -198,33 +202,6 @@ def _write_probe_csvs(solution, outdir: Path) -> list[Path]:
                 rho = 1.0 / state.v if state.v > 0 else ""
                 writer.writerow([repr(float(t)), repr(state.sigma), repr(state.u), rho])
         written.append(path)
-    return written
-
-
-def _write_window_records(solution, outdir: Path, figures: bool) -> list[Path]:
-    """Per interface probe with an optical window: ``window_<name>.csv`` (samples of the
-    true and the apparent velocity, jumps as repeated times) and its figure."""
-    written = []
-    for probe in solution.scene.probes:
-        if probe.window is None:
-            continue
-        record = window_record(solution, probe.name)
-        path = outdir / f"window_{probe.name}.csv"
-        with path.open("w", newline="") as handle:
-            writer = csv.writer(handle)
-            writer.writerow(["t_s", "u_m_per_s", "u_apparent_m_per_s", "u_far_face_m_per_s"])
-            for row in zip(record.t, record.u, record.u_apparent, record.u_far, strict=True):
-                writer.writerow([repr(float(value)) for value in row])
-        written.append(path)
-        if figures:
-            from matplotlib.figure import Figure
-
-            from .window_figure import plot_window_velocity
-
-            figure = Figure(figsize=(7.0, 4.4), layout="constrained")
-            plot_window_velocity(solution, probe.name, ax=figure.add_subplot())
-            figure.savefig(outdir / f"window_{probe.name}.png", dpi=130)
-            written.append(outdir / f"window_{probe.name}.png")
     return written
 
 

@@ -5,7 +5,9 @@
 - ``--peaks``: peak stress, peak tension and impulse against depth,
   ``peaks.csv`` and ``peaks.json`` (``--stations N`` of them);
 - ``--json-compact``: the solution JSON without region polygons (the bulk of a
-  large run's JSON).
+  large run's JSON);
+- always, for an interface probe with an optical window: ``window_<name>.csv`` and
+  its figure (``fronttrack.windows``).
 """
 
 from __future__ import annotations
@@ -15,6 +17,7 @@ from pathlib import Path
 from .errors import SceneError
 from .exports import peak_table, resampled, write_csv, write_json
 from .units import parse_quantity
+from .windows import window_record
 
 
 def add_export_flags(parser) -> None:
@@ -52,4 +55,27 @@ def write_exports(solution, args) -> list[Path]:
         table = peak_table(solution, args.stations)
         written.append(write_csv(table, args.output / "peaks.csv"))
         written.append(write_json(table, args.output / "peaks.json"))
+    return written
+
+
+def write_window_records(solution, outdir: Path, figures: bool) -> list[Path]:
+    """Per interface probe with an optical window: ``window_<name>.csv`` (samples of the
+    true and the apparent velocity, jumps as repeated times) and its figure."""
+    written = []
+    for probe in solution.scene.probes:
+        if probe.window is None:
+            continue
+        record = window_record(solution, probe.name)
+        columns = {"t_s": record.t, "u_m_per_s": record.u,
+                   "u_apparent_m_per_s": record.u_apparent, "u_far_face_m_per_s": record.u_far}
+        written.append(write_csv(columns, outdir / f"window_{probe.name}.csv"))
+        if figures:
+            from matplotlib.figure import Figure
+
+            from .window_figure import plot_window_velocity
+
+            figure = Figure(figsize=(7.0, 4.4), layout="constrained")
+            plot_window_velocity(solution, probe.name, ax=figure.add_subplot())
+            figure.savefig(outdir / f"window_{probe.name}.png", dpi=130)
+            written.append(outdir / f"window_{probe.name}.png")
     return written
