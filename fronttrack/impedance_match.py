@@ -40,7 +40,7 @@ from dataclasses import asdict, dataclass
 
 from materials import Fan, Material, RiemannSolution, Shock, State, solve_contact
 
-from .errors import located
+from .errors import SceneError, located
 from .material import material as named_material
 from .units import to_si
 
@@ -115,10 +115,19 @@ def match(flyer: Material | str, velocity: float | str, stack: list[Material | s
     -------
     list of MatchRow
         The flyer's row, then one per layer (SI: Pa, m/s, kg/m^3, K).
+
+    Raises
+    ------
+    SceneError
+        A velocity that is not > 0, an unknown material name.
     """
     if isinstance(stack, (str, Material)):
         stack = [stack]
-    return impedance_match(_as_material(flyer, "flyer"), to_si(velocity, "velocity", "velocity"),
+    speed = to_si(velocity, "velocity", "velocity")
+    if not speed > 0.0:
+        raise SceneError(f"velocity: the flyer must move toward the stack, > 0 m/s; "
+                         f"got {speed!r}")
+    return impedance_match(_as_material(flyer, "flyer"), speed,
                            [_as_material(m, f"stack[{k}]") for k, m in enumerate(stack)],
                            release=release, mirrored=mirrored)
 

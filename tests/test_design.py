@@ -32,6 +32,10 @@ def test_velocity_for_refuses_what_it_cannot_reach():
         ft.velocity_for("-1 GPa", "Cu", ["Cu"])
     with pytest.raises(ft.SceneError, match="quantity: must be one of"):
         ft.velocity_for("1 GPa", "Cu", ["Cu"], quantity="rho")
+    with pytest.raises(ft.SceneError, match="velocity: the flyer must move toward"):
+        ft.match("Cu", "-500 m/s", ["Al2024"])
+    with pytest.raises(ft.SceneError, match=r"stack\[1\]: .*Unobtainium"):
+        ft.match("Cu", "500 m/s", ["Al2024", "Unobtainium"])
 
 
 def impact(flyer_thickness: float, target_thickness: float, depth: float) -> ft.Scene:
