@@ -3,6 +3,7 @@
     wavediagram demo [-o DIR]                 built-in plate-impact scene -> annotated figures
     wavediagram run SCENE.toml [-o DIR] [--json FILE] [--no-figures]
     wavediagram match FLYER VELOCITY LAYER... [--json FILE] [--mirrored] [--release PATH]
+    wavediagram sweep SCENE.toml --set PATH=VALUES... -o DIR [--quantity NAME]...
     wavediagram materials
 
 Bad input (a malformed scene, an unknown material, a quantity without units, a
@@ -22,6 +23,13 @@ from pathlib import Path
 
 from materials import WavediagramError, library
 
+from .cli_exports import (
+    add_export_flags,
+    check_export_flags,
+    write_exports,
+    write_window_records,
+)
+from .cli_sweep import add_sweep_command
 from .impedance_match import format_table, impedance_match, to_json_dict
 from .runner import run
 from .scene_file import load_scene
@@ -63,6 +71,7 @@ def _parser() -> argparse.ArgumentParser:
     run_.add_argument("--quiet", action="store_true", help="no progress or summary output")
     run_.add_argument("--estimate-error", action="store_true",
                       help="run again at half the ray step and report the estimated error")
+    add_export_flags(run_)
     run_.set_defaults(handler=_run)
 
     match = commands.add_parser("match", help="impedance match a flyer onto a stack")
@@ -76,6 +85,8 @@ def _parser() -> argparse.ArgumentParser:
                        help="use the mirrored-Hugoniot shortcut for reflected waves "
                             "(labelled as such)")
     match.set_defaults(handler=_match)
+
+    add_sweep_command(commands)
 
     mats = commands.add_parser("materials", help="list the material library with sources")
     mats.set_defaults(handler=_materials)
@@ -96,12 +107,14 @@ def _demo(args) -> int:
 
 def _run(args) -> int:
     scene = load_scene(args.scene)
+    check_export_flags(args)
     if args.estimate_error:
         scene = dataclasses.replace(
             scene, accuracy=dataclasses.replace(scene.accuracy, estimate_error=True))
     solution = _solve(scene, quiet=args.quiet)
     written = _write_outputs(solution, args.output, json_path=args.json,
-                             figures=not args.no_figures)
+                             figures=not args.no_figures, compact=args.json_compact)
+    written += write_exports(solution, args)
     if not args.quiet:
         for path in written:
             print(f"wrote {path}")
@@ -166,19 +179,21 @@ def _solve(scene, quiet: bool):
 
 
 def _write_outputs(solution, outdir: Path | None, json_path: Path | None,
-                   figures: bool) -> list[Path]:
+                   figures: bool, compact: bool = False) -> list[Path]:
     written = []
     if outdir is not None:
         outdir.mkdir(parents=True, exist_ok=True)
         json_path = json_path or outdir / "solution.json"
         written += _write_probe_csvs(solution, outdir)
+        written += write_window_records(solution, outdir, figures)
         if figures:
             from .plotting.figures import save_standard_figures
 
             written += save_standard_figures(solution, outdir)
     if json_path is not None:
         json_path.parent.mkdir(parents=True, exist_ok=True)
-        json_path.write_text(json.dumps(solution.to_dict(), separators=(",", ":")))
+        json_path.write_text(json.dumps(solution.to_dict(polygons=not compact),
+                                        separators=(",", ":")))
         written.append(json_path)
     return written
 

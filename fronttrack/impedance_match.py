@@ -40,6 +40,10 @@ from dataclasses import asdict, dataclass
 
 from materials import Fan, Material, RiemannSolution, Shock, State, solve_contact
 
+from .errors import SceneError, located
+from .material import material as named_material
+from .units import to_si
+
 EXACT = "exact"
 MIRRORED = "mirrored Hugoniot"
 
@@ -89,6 +93,50 @@ class MatchRow:
     shock_speed_eulerian: float
     reflected: ReflectedWave | None
     method: str
+
+
+def match(flyer: Material | str, velocity: float | str, stack: list[Material | str],
+          release: str = "isentrope", mirrored: bool = False) -> list[MatchRow]:
+    """The first shock from a flyer through a stack: ``impedance_match`` for users.
+
+    Parameters
+    ----------
+    flyer : Material or str
+        The flyer's material, or its library name.
+    velocity : float or str
+        Impact velocity, m/s or a string with a unit (``"1 km/s"``), > 0.
+    stack : list of Material or str
+        The target's layers, first struck first (semi-infinite, at rest); one
+        material alone is a one-layer stack.
+    release, mirrored
+        As ``impedance_match``.
+
+    Returns
+    -------
+    list of MatchRow
+        The flyer's row, then one per layer (SI: Pa, m/s, kg/m^3, K).
+
+    Raises
+    ------
+    SceneError
+        A velocity that is not > 0, an unknown material name.
+    """
+    if isinstance(stack, (str, Material)):
+        stack = [stack]
+    speed = to_si(velocity, "velocity", "velocity")
+    if not speed > 0.0:
+        raise SceneError(f"velocity: the flyer must move toward the stack, > 0 m/s; "
+                         f"got {speed!r}")
+    return impedance_match(_as_material(flyer, "flyer"), speed,
+                           [_as_material(m, f"stack[{k}]") for k, m in enumerate(stack)],
+                           release=release, mirrored=mirrored)
+
+
+def _as_material(value: Material | str, where: str) -> Material:
+    if isinstance(value, Material):
+        return value
+    with located("material", where):
+        return named_material(value)
 
 
 def impedance_match(flyer: Material, velocity: float, stack: list[Material],

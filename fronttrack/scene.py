@@ -3,9 +3,13 @@
 A scene is a stack of plane layers along the Lagrangian coordinate ``X`` (the
 first layer starts at ``X = 0``), the conditions at its two ends, the contacts
 between neighbouring layers, the time to follow it to, the probes to record and
-the accuracy wanted.  All quantities are SI.  An impact is two neighbouring
-layers with different initial velocities.  Scenes are built in Python or read
-from TOML (``fronttrack.scene_file``); both paths end in ``Scene.validate``.
+the accuracy wanted.  Every class takes quantities as numbers in SI units or as
+strings with a unit, exactly as a scene file writes them (``Layer("Cu", "1 mm",
+velocity="1 km/s")`` is ``Layer(get("Cu"), 1e-3, velocity=1000.0)``), stores them
+in SI, and validates itself when it is built: a bad field raises ``SceneError``
+naming it (``layer.thickness: must be > 0 m``).  ``Scene`` checks what needs the
+whole scene (probes inside the stack, unique names).  Scenes read from TOML
+(``fronttrack.scene_file``) are built by the same classes.
 """
 
 from __future__ import annotations
@@ -13,21 +17,46 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
-from materials import Material, MaterialError, State, StateOutOfRangeError, WavediagramError
+from materials import Material, MaterialError, State, StateOutOfRangeError
+from materials.library import get as library_material
+
+from .errors import SceneError, located
+from .units import to_si
+from .windows import OpticalWindow, optical_window
 
 BOUNDARY_KINDS = ("free", "wall", "velocity", "stress")
 BONDS = ("bonded", "unbonded")
 RELEASE_PATHS = ("isentrope", "hugoniot")
+PROBE_KINDS = ("point", "interface")
+SIDES = ("left", "right")
+
+__all__ = ["BONDS", "BOUNDARY_KINDS", "PROBE_KINDS", "RELEASE_PATHS", "SIDES", "Accuracy",
+           "Boundary", "Layer", "Probe", "Scene", "SceneError", "SpallCriterion", "located"]
 
 
-class SceneError(WavediagramError, ValueError):
-    """A scene field is missing or outside its allowed range; the message names the field."""
+def _set(obj, name: str, value) -> None:
+    """Store a converted field on a frozen dataclass (inside ``__post_init__`` only)."""
+    object.__setattr__(obj, name, value)
+
+
+def _material(where: str, value) -> Material:
+    """A material given as an object or by library name."""
+    if isinstance(value, Material):
+        return value
+    if isinstance(value, str):
+        try:
+            return library_material(value)
+        except MaterialError as error:
+            raise SceneError(f"{where}: {error}") from None
+    raise SceneError(f"{where}: expected a material or a library name, got {value!r}")
 
 
 @dataclass(frozen=True)
 class Layer:
     """One plate: ``material``, ``thickness`` (m), initial ``velocity`` (m/s) and ``stress`` (Pa).
 
+    ``material`` is a ``Material`` or a library name (``"Cu"``); quantities are SI
+    numbers or strings with units (``"1 mm"``, ``"1 km/s"``, ``"0.5 GPa"``).
     ``bond`` is the contact with the previous layer: ``"bonded"`` (carries
     tension up to the weaker material's spall strength) or ``"unbonded"`` (opens
     a gap under any tension).  An initial stress is reached from the reference
@@ -38,13 +67,49 @@ class Layer:
     layer already shocked.
     """
 
-    material: Material
-    thickness: float
-    velocity: float = 0.0
-    stress: float = 0.0
+    material: Material | str
+    thickness: float | str
+    velocity: float | str = 0.0
+    stress: float | str = 0.0
     bond: str = "bonded"
     name: str = ""
     initial: State | None = None
+
+    def __post_init__(self) -> None:
+        _set(self, "material", _material("layer.material", self.material))
+        _set(self, "thickness", to_si(self.thickness, "length", "layer.thickness"))
+        _set(self, "velocity", to_si(self.velocity, "velocity", "layer.velocity"))
+        _set(self, "stress", to_si(self.stress, "stress", "layer.stress"))
+        if not self.thickness > 0.0:
+            raise SceneError(f"layer.thickness: must be > 0 m, got {self.thickness!r}")
+        if self.bond not in BONDS:
+            raise SceneError(f"layer.bond: must be one of {BONDS}, got {self.bond!r}")
+        if not isinstance(self.name, str):
+            raise SceneError(f"layer.name: expected a string, got {self.name!r}")
+        if self.initial is not None:
+            _check_initial_state(self.material, self.initial)
+
+
+def _check_initial_state(material: Material, state: State) -> None:
+    """An explicit initial state must be finite, inside the EOS and self-consistent."""
+    if not isinstance(state, State):
+        raise SceneError(f"layer.initial: expected a State, got {state!r}")
+    for name in ("sigma", "u", "v", "e"):
+        value = getattr(state, name)
+        if not isinstance(value, (int, float)) or not math.isfinite(value):
+            raise SceneError(f"layer.initial.{name}: must be a finite number (SI), "
+                             f"got {value!r}")
+    try:
+        material.check_volume(state.v)
+    except (MaterialError, StateOutOfRangeError) as error:
+        raise SceneError(f"layer.initial.v: {error}") from None
+    sigma = material.stress(state.v, state.e)
+    if abs(sigma - state.sigma) > 1e-12 * max(abs(sigma), abs(state.sigma), 1.0):
+        raise SceneError(f"layer.initial.sigma: {state.sigma!r} Pa differs from the "
+                         f"equation of state's {sigma!r} Pa at that volume and energy")
+
+
+_BOUNDARY_DIMENSION = {"velocity": "velocity", "stress": "stress"}
 
 
 @dataclass(frozen=True)
@@ -52,18 +117,52 @@ class Boundary:
     """Condition at one end of the stack.
 
     ``kind``: ``"free"`` (sigma = 0), ``"wall"`` (u = 0), ``"velocity"`` or
-    ``"stress"`` (a prescribed history).  ``history`` is a tuple of ``(t, value)``
-    points (s, and m/s or Pa), linear in between and constant after the last
-    point; one point means a constant value.  Two points at one time make a
-    step (a square pulse is ``(0, P), (tau, P), (tau, 0)``): the later value holds
-    from that time on.  A velocity boundary is a piston: it pushes, and unless ``bond``
-    is ``"bonded"`` a piston that pulls away faster than the material can follow
-    separates from it; the face is then free until the two meet again.
+    ``"stress"`` (a prescribed history).  ``history`` is one value (a constant:
+    ``Boundary("stress", "1 GPa")``) or a sequence of ``(t, value)`` points (s, and
+    m/s or Pa, or strings with units), linear in between and constant after the
+    last point.  Two points at one time make a step (a square pulse is ``(0, P),
+    (tau, P), (tau, 0)``): the later value holds from that time on.  It is stored
+    as a tuple of SI pairs.  A velocity boundary is a piston: it pushes, and unless
+    ``bond`` is ``"bonded"`` a piston that pulls away faster than the material can
+    follow separates from it; the face is then free until the two meet again.
     """
 
     kind: str = "free"
-    history: tuple[tuple[float, float], ...] = ()
+    history: tuple[tuple[float, float], ...] | float | str = ()
     bond: str = "unbonded"
+
+    def __post_init__(self) -> None:
+        if self.kind not in BOUNDARY_KINDS:
+            raise SceneError(f"boundary.kind: must be one of {BOUNDARY_KINDS}, "
+                             f"got {self.kind!r}")
+        if self.bond not in BONDS:
+            raise SceneError(f"boundary.bond: must be one of {BONDS}, got {self.bond!r}")
+        dimension = _BOUNDARY_DIMENSION.get(self.kind)
+        if dimension is None:
+            if self.history != ():
+                raise SceneError(f"boundary.history: a {self.kind} boundary takes no "
+                                 f"history, got {self.history!r}")
+            return
+        points = self.history
+        if isinstance(points, (str, int, float)):
+            points = ((0.0, points),)
+        if not points:
+            raise SceneError(f"boundary.history: a {self.kind} boundary needs a value "
+                             f"or a history")
+        history = []
+        for k, point in enumerate(points):
+            if isinstance(point, str) or len(point) != 2:
+                raise SceneError(f"boundary.history[{k}]: expected a (time, value) pair, "
+                                 f"got {point!r}")
+            history.append((to_si(point[0], "time", f"boundary.history[{k}] time"),
+                            to_si(point[1], dimension, f"boundary.history[{k}] value")))
+        times = [t for t, _ in history]
+        steps = zip(times[:-1], times[1:], strict=True)
+        triples = zip(times[:-2], times[2:], strict=True)
+        if times[0] < 0.0 or any(b < a for a, b in steps) or any(a == c for a, c in triples):
+            raise SceneError(f"boundary.history: times must start at >= 0 s and increase "
+                             f"(two equal times make a step, three may not), got {times}")
+        _set(self, "history", tuple(history))
 
     def value_at(self, t: float) -> float:
         """Prescribed velocity (m/s) or stress (Pa) at time ``t`` (s)."""
@@ -81,10 +180,44 @@ class Boundary:
 
 @dataclass(frozen=True)
 class Probe:
-    """A recording station: ``at`` is ``"left"``, ``"right"`` or a Lagrangian position (m)."""
+    """A recording station.
+
+    ``at`` is ``"left"``, ``"right"`` or a Lagrangian position (m, or a string with
+    a unit).  ``kind = "interface"`` marks a station on a contact between layers
+    (or an end of the stack) that an interferometer looks at through the layer on
+    ``side`` (``"left"`` or ``"right"``); ``window`` then names the optical window
+    (or is an ``OpticalWindow``) whose refractive index turns the interface velocity
+    into the apparent velocity the interferometer reports (``fronttrack.windows``),
+    recorded beside the true one.  The layer on ``side`` is the window.
+    """
 
     name: str
     at: str | float
+    kind: str = "point"
+    side: str | None = None
+    window: str | OpticalWindow | None = None
+
+    def __post_init__(self) -> None:
+        if not isinstance(self.name, str) or not self.name:
+            raise SceneError(f"probe.name: expected a non-empty string, got {self.name!r}")
+        if not (isinstance(self.at, str) and self.at in SIDES):
+            _set(self, "at", to_si(self.at, "length", "probe.at"))
+            if self.at < 0.0:
+                raise SceneError(f"probe.at: must be 'left', 'right' or a position >= 0 m, "
+                                 f"got {self.at!r}")
+        if self.kind not in PROBE_KINDS:
+            raise SceneError(f"probe.kind: must be one of {PROBE_KINDS}, got {self.kind!r}")
+        if self.kind == "point":
+            if self.side is not None or self.window is not None:
+                raise SceneError("probe.window: only an interface probe (kind = "
+                                 "'interface') has a side and a window")
+            return
+        if self.side not in SIDES:
+            raise SceneError(f"probe.side: an interface probe looks through the layer on "
+                             f"one side, one of {SIDES}; got {self.side!r}")
+        if self.window is not None:
+            with located("window", "probe.window"):
+                _set(self, "window", optical_window(self.window))
 
 
 @dataclass(frozen=True)
@@ -110,20 +243,61 @@ class Accuracy:
     the neighbouring contact is merged like a negligible one (counted in the report);
     0, the default, keeps every one.  ``estimate_error``: run the scene again at half the
     characteristic step and report the estimated error of the records
-    (``fronttrack.error_estimate``) when it has fans.
+    (``fronttrack.error_estimate``) when it has fans.  Quantities are SI numbers or
+    strings with units.
     """
 
-    stress_tolerance: float | None = None
-    velocity_tolerance: float | None = None
+    stress_tolerance: float | str | None = None
+    velocity_tolerance: float | str | None = None
     rays_per_fan: int | None = None
-    characteristic_step: float | None = None
-    negligible_stress: float | None = None
+    characteristic_step: float | str | None = None
+    negligible_stress: float | str | None = None
     release: str = "isentrope"
     entropy_contacts: bool = True
     max_events: int = 200_000
-    spall_spacing: float | None = None
-    contact_resolution: float = 0.0
+    spall_spacing: float | str | None = None
+    contact_resolution: float | str = 0.0
     estimate_error: bool = False
+
+    def __post_init__(self) -> None:
+        for name, dimension, lowest in _ACCURACY_QUANTITIES:
+            value = getattr(self, name)
+            if value is None:
+                continue
+            value = to_si(value, dimension, f"accuracy.{name}")
+            _set(self, name, value)
+            if not (value > 0.0 if lowest == ">" else value >= 0.0):
+                raise SceneError(f"accuracy.{name}: must be {lowest} 0 "
+                                 f"{_SI_UNITS[dimension]}, got {value!r}")
+        if self.rays_per_fan is not None and not (
+                _is_int(self.rays_per_fan) and 1 <= self.rays_per_fan <= 100_000):
+            raise SceneError(f"accuracy.rays_per_fan: must be an integer in 1..100000, "
+                             f"got {self.rays_per_fan!r}")
+        if self.release not in RELEASE_PATHS:
+            raise SceneError(f"accuracy.release: must be one of {RELEASE_PATHS}, "
+                             f"got {self.release!r}")
+        for name in ("entropy_contacts", "estimate_error"):
+            if not isinstance(getattr(self, name), bool):
+                raise SceneError(f"accuracy.{name}: expected true or false, "
+                                 f"got {getattr(self, name)!r}")
+        if not (_is_int(self.max_events) and self.max_events >= 1):
+            raise SceneError(f"accuracy.max_events: must be a positive integer, "
+                             f"got {self.max_events!r}")
+
+
+_ACCURACY_QUANTITIES = (("stress_tolerance", "stress", ">"),
+                        ("velocity_tolerance", "velocity", ">"),
+                        ("characteristic_step", "stress", ">"),
+                        ("negligible_stress", "stress", ">="),
+                        ("spall_spacing", "length", ">="),
+                        ("contact_resolution", "length", ">="))
+"""Dimensional fields of ``Accuracy``: name, dimension, and the bound on their value."""
+
+_SI_UNITS = {"stress": "Pa", "velocity": "m/s", "length": "m", "time": "s"}
+
+
+def _is_int(value) -> bool:
+    return isinstance(value, int) and not isinstance(value, bool)
 
 
 @dataclass(frozen=True)
@@ -137,48 +311,62 @@ class SpallCriterion:
     tension must stay beyond the threshold for ``damage`` seconds.  ``stations``
     is the number of Lagrangian stations per layer at which the damage is
     integrated exactly (the fracture plane is the first station to fail).
+    ``threshold`` may be a string with a unit.
     """
 
-    threshold: float
+    threshold: float | str
     damage: float
     exponent: float = 2.0
     stations: int = 400
 
-    @classmethod
-    def incubation(cls, threshold: float, time: float, stations: int = 400) -> SpallCriterion:
-        """Tension beyond ``threshold`` (Pa) held for ``time`` (s) fractures the point."""
-        return cls(threshold=threshold, damage=time, exponent=0.0, stations=stations)
-
-    def validate(self) -> None:
-        """Raise ``SceneError`` naming the first bad field."""
-        _finite("spall.threshold", self.threshold, "Pa")
+    def __post_init__(self) -> None:
+        _set(self, "threshold", to_si(self.threshold, "stress", "spall.threshold"))
         if self.threshold < 0.0:
             raise SceneError(f"spall.threshold: must be >= 0 Pa, got {self.threshold!r}")
-        _finite_positive("spall.damage", self.damage, "Pa^exponent s")
-        _finite("spall.exponent", self.exponent, "dimensionless")
-        if not 0.0 <= self.exponent <= 10.0:
-            raise SceneError(f"spall.exponent: must be in 0..10, got {self.exponent!r}")
-        if not (isinstance(self.stations, int) and 2 <= self.stations <= 100_000):
+        damage = to_si(self.damage, "dimensionless", "spall.damage")
+        if not damage > 0.0:
+            raise SceneError(f"spall.damage: must be > 0 Pa^exponent s, got {damage!r}")
+        exponent = to_si(self.exponent, "dimensionless", "spall.exponent")
+        if not 0.0 <= exponent <= 10.0:
+            raise SceneError(f"spall.exponent: must be in 0..10, got {exponent!r}")
+        _set(self, "damage", damage)
+        _set(self, "exponent", exponent)
+        if not (_is_int(self.stations) and 2 <= self.stations <= 100_000):
             raise SceneError(f"spall.stations: must be an integer in 2..100000, "
                              f"got {self.stations!r}")
+
+    @classmethod
+    def incubation(cls, threshold: float | str, time: float | str,
+                   stations: int = 400) -> SpallCriterion:
+        """Tension beyond ``threshold`` (Pa) held for ``time`` (s) fractures the point."""
+        return cls(threshold=threshold, damage=to_si(time, "time", "spall.incubation_time"),
+                   exponent=0.0, stations=stations)
 
 
 @dataclass(frozen=True)
 class Scene:
     """A complete plane-wave scene (SI units).
 
-    ``spall_criterion``, if given, replaces the materials' instantaneous spall
-    thresholds inside every layer by a cumulative-damage criterion.
+    ``layers`` is a sequence of ``Layer`` (stored as a tuple), ``t_end`` the time to
+    follow it to (s, or a string such as ``"3 us"``).  ``spall_criterion``, if given,
+    replaces the materials' instantaneous spall thresholds inside every layer by a
+    cumulative-damage criterion.
     """
 
     layers: tuple[Layer, ...]
-    t_end: float
+    t_end: float | str
     left: Boundary = field(default_factory=Boundary)
     right: Boundary = field(default_factory=Boundary)
     probes: tuple[Probe, ...] = ()
     accuracy: Accuracy = field(default_factory=Accuracy)
     title: str = ""
     spall_criterion: SpallCriterion | None = None
+
+    def __post_init__(self) -> None:
+        _set(self, "layers", tuple(self.layers))
+        _set(self, "probes", tuple(self.probes))
+        _set(self, "t_end", to_si(self.t_end, "time", "t_end"))
+        self.validate()
 
     @property
     def length(self) -> float:
@@ -194,106 +382,47 @@ class Scene:
         return positions
 
     def validate(self) -> Scene:
-        """Check every field; raise ``SceneError`` naming the first bad one. Returns self."""
+        """Check what needs the whole scene (each part checked itself when built).
+
+        Raises ``SceneError`` naming the first bad field; returns ``self``.
+        """
         if not self.layers:
             raise SceneError("layer: a scene needs at least one layer")
-        _finite_positive("t_end", self.t_end, "s")
-        for i, layer in enumerate(self.layers):
-            where = f"layer[{i}]"
-            if not isinstance(layer.material, Material):
-                raise SceneError(f"{where}.material: expected a material, got {layer.material!r}")
-            _finite_positive(f"{where}.thickness", layer.thickness, "m")
-            _finite(f"{where}.velocity", layer.velocity, "m/s")
-            _finite(f"{where}.stress", layer.stress, "Pa")
-            if layer.initial is not None:
-                _check_initial_state(where, layer)
-            if layer.bond not in BONDS:
-                raise SceneError(f"{where}.bond: must be one of {BONDS}, got {layer.bond!r}")
-        for side, boundary in (("left", self.left), ("right", self.right)):
-            if boundary.bond not in BONDS:
-                raise SceneError(f"{side}.bond: must be one of {BONDS}, got {boundary.bond!r}")
-            if boundary.kind not in BOUNDARY_KINDS:
-                raise SceneError(
-                    f"{side}.kind: must be one of {BOUNDARY_KINDS}, got {boundary.kind!r}")
-            if boundary.kind in ("velocity", "stress"):
-                if not boundary.history:
-                    raise SceneError(f"{side}.{boundary.kind}: a {boundary.kind} boundary "
-                                     f"needs a value or a history")
-                times = [t for t, _ in boundary.history]
-                steps = zip(times[:-1], times[1:], strict=True)
-                triples = zip(times[:-2], times[2:], strict=True)
-                if (times[0] < 0.0 or any(b < a for a, b in steps)
-                        or any(a == c for a, c in triples)):
-                    raise SceneError(f"{side}.history: times must start at >= 0 s and "
-                                     f"increase (two equal times make a step, three may "
-                                     f"not), got {times}")
-                for t, value in boundary.history:
-                    _finite(f"{side}.history time", t, "s")
-                    _finite(f"{side}.history value", value, "SI")
+        if not self.t_end > 0.0:
+            raise SceneError(f"t_end: must be > 0 s, got {self.t_end!r}")
+        for name, value, kind in (*((f"layer[{i}]", layer, Layer)
+                                    for i, layer in enumerate(self.layers)),
+                                  ("left", self.left, Boundary), ("right", self.right, Boundary),
+                                  ("accuracy", self.accuracy, Accuracy),
+                                  *((f"probe[{i}]", p, Probe)
+                                    for i, p in enumerate(self.probes))):
+            if not isinstance(value, kind):
+                raise SceneError(f"{name}: expected a {kind.__name__}, got {value!r}")
+        if self.spall_criterion is not None and not isinstance(self.spall_criterion,
+                                                                 SpallCriterion):
+            raise SceneError(f"spall: expected a SpallCriterion, got {self.spall_criterion!r}")
         names = set()
         for probe in self.probes:
             if probe.name in names:
                 raise SceneError(f"probe.name: duplicate probe name {probe.name!r}")
             names.add(probe.name)
-            if isinstance(probe.at, str):
-                if probe.at not in ("left", "right"):
-                    raise SceneError(f"probe[{probe.name}].at: must be 'left', 'right' or a "
-                                     f"position in 0..{self.length * 1e3:.6g} mm")
-            elif not 0.0 <= probe.at <= self.length:
-                raise SceneError(f"probe[{probe.name}].at: position {probe.at * 1e3:.6g} mm is "
-                                 f"outside the stack (0 to {self.length * 1e3:.6g} mm)")
-        acc = self.accuracy
-        if acc.rays_per_fan is not None and not (
-                isinstance(acc.rays_per_fan, int) and 1 <= acc.rays_per_fan <= 100_000):
-            raise SceneError(f"accuracy.rays_per_fan: must be an integer in 1..100000, "
-                             f"got {acc.rays_per_fan!r}")
-        for name, unit in (("stress_tolerance", "Pa"), ("velocity_tolerance", "m/s"),
-                           ("characteristic_step", "Pa")):
-            if getattr(acc, name) is not None:
-                _finite_positive(f"accuracy.{name}", getattr(acc, name), unit)
-        if acc.negligible_stress is not None and not acc.negligible_stress >= 0.0:
-            raise SceneError(f"accuracy.negligible_stress: must be >= 0 Pa, "
-                             f"got {acc.negligible_stress!r}")
-        if acc.release not in RELEASE_PATHS:
-            raise SceneError(f"accuracy.release: must be one of {RELEASE_PATHS}, "
-                             f"got {acc.release!r}")
-        if acc.spall_spacing is not None and not acc.spall_spacing >= 0.0:
-            raise SceneError(f"accuracy.spall_spacing: must be >= 0 m, "
-                             f"got {acc.spall_spacing!r}")
-        if not acc.contact_resolution >= 0.0:
-            raise SceneError(f"accuracy.contact_resolution: must be >= 0 m, "
-                             f"got {acc.contact_resolution!r}")
-        if not (isinstance(acc.max_events, int) and acc.max_events >= 1):
-            raise SceneError(f"accuracy.max_events: must be a positive integer, "
-                             f"got {acc.max_events!r}")
-        if self.spall_criterion is not None:
-            self.spall_criterion.validate()
+            self._check_probe(probe)
         return self
 
-
-def _finite(name: str, value, unit: str) -> None:
-    if not isinstance(value, (int, float)) or not math.isfinite(value):
-        raise SceneError(f"{name}: must be a finite number ({unit}), got {value!r}")
-
-
-def _finite_positive(name: str, value, unit: str) -> None:
-    _finite(name, value, unit)
-    if not value > 0.0:
-        raise SceneError(f"{name}: must be > 0 {unit}, got {value!r}")
-
-
-def _check_initial_state(where: str, layer: Layer) -> None:
-    """An explicit initial state must be finite, inside the EOS and self-consistent."""
-    state, material = layer.initial, layer.material
-    if not isinstance(state, State):
-        raise SceneError(f"{where}.initial: expected a State, got {state!r}")
-    for name in ("sigma", "u", "v", "e"):
-        _finite(f"{where}.initial.{name}", getattr(state, name), "SI")
-    try:
-        material.check_volume(state.v)
-    except (MaterialError, StateOutOfRangeError) as error:
-        raise SceneError(f"{where}.initial.v: {error}") from None
-    sigma = material.stress(state.v, state.e)
-    if abs(sigma - state.sigma) > 1e-12 * max(abs(sigma), abs(state.sigma), 1.0):
-        raise SceneError(f"{where}.initial.sigma: {state.sigma!r} Pa differs from the "
-                         f"equation of state's {sigma!r} Pa at that volume and energy")
+    def _check_probe(self, probe: Probe) -> None:
+        """A probe must lie in the stack; an interface probe on a contact or an end."""
+        where = f"probe[{probe.name}].at"
+        x = {"left": 0.0, "right": self.length}.get(probe.at, probe.at)
+        if not 0.0 <= x <= self.length:
+            raise SceneError(f"{where}: position {x * 1e3:.6g} mm is outside the stack "
+                             f"(0 to {self.length * 1e3:.6g} mm)")
+        if probe.kind != "interface":
+            return
+        edges = [0.0, *self.interfaces(), self.length]
+        if not any(abs(x - edge) <= 1e-12 * self.length for edge in edges):
+            raise SceneError(f"{where}: an interface probe must sit on a contact or an end "
+                             f"of the stack ({', '.join(f'{e * 1e3:.6g}' for e in edges)} "
+                             f"mm), got {x * 1e3:.6g} mm")
+        if (probe.side == "left" and x <= 0.0) or (probe.side == "right" and x >= self.length):
+            raise SceneError(f"probe[{probe.name}].side: there is no layer on the "
+                             f"{probe.side} of {x * 1e3:.6g} mm")

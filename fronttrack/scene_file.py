@@ -54,6 +54,7 @@ from .scene import (
     Scene,
     SceneError,
     SpallCriterion,
+    located,
 )
 from .units import parse_quantity
 
@@ -64,7 +65,7 @@ _LAYER_KEYS = ("material", "thickness", "velocity", "stress", "name", "bond", "p
 _GAS_KEYS = ("pressure", "density", "temperature")
 """Keys that give a gas layer its state (a gas is given a state, not loaded into one)."""
 _BOUNDARY_KEYS = ("kind", "value", "history", "bond")
-_PROBE_KEYS = ("name", "at")
+_PROBE_KEYS = ("name", "at", "kind", "side", "window")
 _ACCURACY_KEYS = ("rays_per_fan", "stress_tolerance", "velocity_tolerance",
                   "characteristic_step", "negligible_stress", "release",
                   "entropy_contacts", "max_events", "spall_spacing", "contact_resolution",
@@ -99,7 +100,7 @@ def scene_from_dict(doc: dict[str, Any], base_name: str = "") -> Scene:
     layer_tables = _array_of_tables(doc, "layer", required=True)
     layers = tuple(_layer(table, i, materials) for i, table in enumerate(layer_tables))
     probes = tuple(_probe(table, i) for i, table in enumerate(_array_of_tables(doc, "probe")))
-    scene = Scene(
+    return Scene(
         layers=layers,
         t_end=parse_quantity(doc["t_end"], "time", "t_end"),
         left=_boundary(doc.get("left", {}), "left"),
@@ -109,7 +110,6 @@ def scene_from_dict(doc: dict[str, Any], base_name: str = "") -> Scene:
         title=_string(doc, "title", "title", base_name),
         spall_criterion=_spall(_table(doc["spall"], "spall")) if "spall" in doc else None,
     )
-    return scene.validate()
 
 
 # --- structure -----------------------------------------------------------------------------
@@ -200,7 +200,8 @@ def _layer(table: dict[str, Any], index: int, inline: dict[str, Material]) -> La
         raise SceneError(f"{path}.bond: the first layer has no previous layer to bond to")
     velocity = _optional_quantity(table, "velocity", "velocity", f"{path}.velocity", 0.0)
     stress = _optional_quantity(table, "stress", "stress", f"{path}.stress", 0.0)
-    return Layer(
+    return _built(
+        path, "layer", Layer,
         material=material,
         thickness=parse_quantity(_required(table, "thickness", path), "length",
                                  f"{path}.thickness"),
@@ -258,7 +259,7 @@ def _boundary(table: Any, side: str) -> Boundary:
     if kind not in _BOUNDARY_DIMENSION:
         if given:
             raise SceneError(f"{side}.{given[0]}: a {kind} boundary takes no {given[0]}")
-        return Boundary(kind)
+        return _built(side, "boundary", Boundary, kind)
     bond = _string(table, "bond", f"{side}.bond", "unbonded")
     if "bond" in table and kind != "velocity":
         raise SceneError(f"{side}.bond: only a velocity boundary (a piston) takes a bond")
@@ -266,8 +267,9 @@ def _boundary(table: Any, side: str) -> Boundary:
         raise SceneError(f"{side}: a {kind} boundary needs exactly one of value or history")
     dimension = _BOUNDARY_DIMENSION[kind]
     if "value" in table:
-        return Boundary(kind, ((0.0, parse_quantity(table["value"], dimension,
-                                                    f"{side}.value")),), bond)
+        return _built(side, "boundary", Boundary, kind,
+                      ((0.0, parse_quantity(table["value"], dimension, f"{side}.value")),),
+                      bond)
     points = table["history"]
     if not isinstance(points, list) or not points:
         raise SceneError(f'{side}.history: expected a list of [time, value] pairs such as '
@@ -279,7 +281,13 @@ def _boundary(table: Any, side: str) -> Boundary:
             raise SceneError(f"{where}: expected a [time, value] pair, got {point!r}")
         history.append((parse_quantity(point[0], "time", f"{where} time"),
                         parse_quantity(point[1], dimension, f"{where} value")))
-    return Boundary(kind, tuple(history), bond)
+    return _built(side, "boundary", Boundary, kind, tuple(history), bond)
+
+
+def _built(path: str, prefix: str, cls: type, *args: Any, **kwargs: Any) -> Any:
+    """``cls(*args, **kwargs)``, its errors about ``prefix.*`` restated about ``path.*``."""
+    with located(prefix, path):
+        return cls(*args, **kwargs)
 
 
 def _probe(table: dict[str, Any], index: int) -> Probe:
@@ -288,7 +296,9 @@ def _probe(table: dict[str, Any], index: int) -> Probe:
     at = _required(table, "at", path)
     if at not in ("left", "right"):
         at = parse_quantity(at, "length", f"{path}.at")
-    return Probe(name=_string(table, "name", f"{path}.name"), at=at)
+    return _built(path, "probe", Probe, name=_string(table, "name", f"{path}.name"), at=at,
+                  kind=_string(table, "kind", f"{path}.kind", "point"),
+                  side=table.get("side"), window=table.get("window"))
 
 
 def _accuracy(table: dict[str, Any]) -> Accuracy:

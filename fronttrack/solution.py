@@ -31,6 +31,7 @@ from materials import State
 
 from .fronts import UNKNOWN, FrontRecord, RegionRecord
 from .kinds import FrontKind
+from .windows import window_record
 
 
 @dataclass(frozen=True)
@@ -628,8 +629,9 @@ class Solution:
         return found.material if not isinstance(found, tuple) else found[0].material
 
     # --- export -------------------------------------------------------------------------
-    def to_dict(self, probes: bool = True) -> dict:
-        """A JSON-ready document of the solution (SI units)."""
+    def to_dict(self, probes: bool = True, polygons: bool = True) -> dict:
+        """A JSON-ready document of the solution (SI units); ``polygons=False`` leaves
+        out the regions' X–t polygons (most of a large run's document)."""
         regions = []
         for r in self.regions:
             s = r.state
@@ -640,8 +642,8 @@ class Solution:
                 "rho": 1.0 / s.v if s.v > 0 else None, "e": s.e,
                 "plastic_strain": s.plastic_strain,
                 "temperature": temperature, "t_start": r.t_start, "t_end": r.t_end,
-                "in_fan": r.in_fan, "polygon": [list(p) for p in r.polygon()],
-            })
+                "in_fan": r.in_fan,
+            } | ({"polygon": [list(p) for p in r.polygon()]} if polygons else {}))
         fronts = [{
             "id": f.id, "kind": str(f.kind), "x0": f.x0, "t0": f.t0, "x1": f.x1, "t1": f.t1,
             "speed": f.speed, "direction": f.direction, "jump": f.jump, "wave": f.wave,
@@ -672,7 +674,7 @@ class Solution:
             doc["probes"] = {
                 name: {"at": _probe_at(p), "t": h.t.tolist(), "sigma": h.sigma.tolist(),
                        "u": h.u.tolist(), "sigma_end": h.sigma_end.tolist(),
-                       "u_end": h.u_end.tolist()}
+                       "u_end": h.u_end.tolist()} | _window_fields(self, p)
                 for (name, h), p in zip(self.probe_histories().items(), self.scene.probes,
                                         strict=True)
             }
@@ -707,6 +709,18 @@ def _state_in(record: History, x: float) -> State:
 
 def _finite_or_none(value: float):
     return value if math.isfinite(value) else None
+
+
+def _window_fields(solution: Solution, probe) -> dict:
+    """The interferometer record of a probe behind an optical window (``{}`` without one):
+    samples ``t`` (s) of the true ``u`` and apparent ``u_apparent`` velocity (m/s)."""
+    if probe.window is None:
+        return {}
+    record = window_record(solution, probe.name)
+    return {"window": {"name": record.window.name, "a": record.window.a,
+                       "b": record.window.b, "source": record.window.source,
+                       "t": record.t.tolist(), "u": record.u.tolist(),
+                       "u_apparent": record.u_apparent.tolist()}}
 
 
 def _probe_at(probe):

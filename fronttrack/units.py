@@ -7,7 +7,8 @@ units (m, s, m/s, Pa, kg/m^3, J/kg, J/(kg K)); a bare number is accepted only
 for dimensionless quantities.  Stress keeps the project's sign convention:
 positive in compression, so ``"-0.5 GPa"`` is a tension.
 
-Errors raise ``SceneError`` naming the field, the text received and the units
+``to_si`` is the rule of the Python API: a number is already SI, a string is
+parsed as in a file.  Errors raise ``SceneError`` naming the field, the text received and the units
 allowed, for example::
 
     layer[0].thickness: missing units in "5" (use one of m, mm, um, µm, cm, in)
@@ -16,10 +17,11 @@ allowed, for example::
 from __future__ import annotations
 
 import math
+import numbers
 import re
 from fractions import Fraction
 
-from .scene import SceneError
+from .errors import SceneError
 
 _F = Fraction
 
@@ -97,3 +99,20 @@ def parse_quantity(text: str | float, dimension: str, field: str) -> float:
         raise SceneError(f'{field}: unknown unit "{unit}" in "{text}" ({hint})')
     factor = UNITS[dimension][unit]
     return number * factor.numerator / factor.denominator
+
+
+def to_si(value: str | float, dimension: str, field: str) -> float:
+    """``value`` in SI: a number is taken as SI already, a string is parsed with its unit.
+
+    The rule of the Python API (``Layer(cu, "1 mm")`` and ``Layer(cu, 1e-3)`` are the
+    same layer); files use ``parse_quantity``, which insists on units.  NaN and
+    infinities are rejected.  Raises ``SceneError`` naming ``field``.
+    """
+    if isinstance(value, str):
+        return parse_quantity(value, dimension, field)
+    if isinstance(value, bool) or not isinstance(value, numbers.Real):
+        raise SceneError(f"{field}: expected a number (SI) or a string with a unit such as "
+                         f'"1 {allowed_units(dimension)[0]}", got {value!r}')
+    if not math.isfinite(value):
+        raise SceneError(f"{field}: must be a finite number, got {value!r}")
+    return float(value)

@@ -180,13 +180,14 @@ def test_event_limit_names_the_field():
 
 
 @pytest.mark.parametrize("layers, field", [
-    (lambda m: (Layer(m, -1e-3),), "layer[0].thickness"),
-    (lambda m: (Layer(m, 1e-3, float("nan")),), "layer[0].velocity"),
-    (lambda m: (Layer(m, 1e-3), Layer(m, 1e-3, bond="glued")), "layer[1].bond"),
-    (lambda m: (), "layer"),
+    (lambda m: (Layer(m, -1e-3),), "layer.thickness: must be > 0 m"),
+    (lambda m: (Layer(m, 1e-3, float("nan")),), "layer.velocity: must be a finite"),
+    (lambda m: (Layer(m, 1e-3), Layer(m, 1e-3, bond="glued")), "layer.bond: must be one of"),
+    (lambda m: (), "layer: a scene needs at least one layer"),
 ])
 def test_bad_scenes_name_the_field(layers, field):
-    with pytest.raises(SceneError, match=field.replace("[", r"\[").replace("]", r"\]")):
+    """Each part of a scene checks itself when it is built."""
+    with pytest.raises(SceneError, match=field):
         run(Scene(layers=layers(copper()), t_end=1e-6))
 
 
@@ -231,9 +232,8 @@ def test_square_stress_pulse_from_two_points_at_one_time():
     assert list(history.t) == pytest.approx([0.0, 0.4e-6, 0.6e-6], rel=1e-12)
     assert list(history.sigma) == pytest.approx([0.0, 1e9, 0.0], abs=1e-3)
     assert history.u[1] == pytest.approx(1e9 / (2700.0 * 5000.0), rel=1e-12)
-    triple = Boundary("stress", ((0.0, 1e9), (0.2e-6, 1e9), (0.2e-6, 0.0), (0.2e-6, 1.0)))
-    with pytest.raises(SceneError, match=r"left\.history"):
-        Scene(layers=(Layer(bar, 5e-3),), t_end=1e-6, left=triple).validate()
+    with pytest.raises(SceneError, match=r"boundary\.history: times must"):
+        Boundary("stress", ((0.0, 1e9), (0.2e-6, 1e9), (0.2e-6, 0.0), (0.2e-6, 1.0)))
 
 
 @pytest.mark.parametrize("velocity, energy_tolerance", [(1e-9, 1e-12), (1e-3, 1e-8)])
