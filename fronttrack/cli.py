@@ -121,14 +121,7 @@ def _match(args) -> int:
 
 
 def _materials(args) -> int:
-    print(f"{'name':<12} {'rho0 kg/m3':>10} {'c0 m/s':>8} {'s':>6} {'Gamma0':>6} "
-          f"{'spall GPa':>9}  source")
-    for name in library.available():
-        e = library.entry(name)
-        spall = e.get("spall_strength")
-        spall_text = f"{spall / 1e9:9.2f}" if spall is not None else f"{'-':>9}"
-        print(f"{name:<12} {e['rho0']:>10.0f} {e['c0']:>8.0f} {e['s']:>6.3f} "
-              f"{e['gamma0']:>6.2f} {spall_text}  {e.get('source', '')}")
+    print(library.listing())
     return 0
 
 
