@@ -25,6 +25,7 @@ from materials import WavediagramError, library
 from .impedance_match import format_table, impedance_match, to_json_dict
 from .runner import run
 from .scene_file import load_scene
+from .tension_report import unlimited_tension
 from .units import parse_quantity
 
 USER_ERRORS = (WavediagramError, FileNotFoundError)
@@ -101,7 +102,7 @@ def _run(args) -> int:
             scene, accuracy=dataclasses.replace(scene.accuracy, estimate_error=True))
     solution = _solve(scene, quiet=args.quiet)
     written = _write_outputs(solution, args.output, json_path=args.json,
-                             figures=not args.no_figures)
+                             figures=not args.no_figures, quiet=args.quiet)
     if not args.quiet:
         for path in written:
             print(f"wrote {path}")
@@ -143,6 +144,8 @@ def _solve(scene, quiet: bool):
               f"{len(solution.spalls)} spall planes, solved in {stats['solve_time']:.3g} s "
               f"(release: {report['release']}, {report['dropped_waves']} waves below "
               f"{report['negligible_stress']:.3g} Pa dropped)", file=sys.stderr)
+        for found in unlimited_tension(solution):
+            print(f"note: {found.message()}", file=sys.stderr)
         estimate = report.get("error_estimate")
         if estimate:
             print(f"estimated error of the probe records: {estimate['sigma'] / 1e6:.3g} MPa, "
@@ -151,7 +154,7 @@ def _solve(scene, quiet: bool):
 
 
 def _write_outputs(solution, outdir: Path | None, json_path: Path | None,
-                   figures: bool) -> list[Path]:
+                   figures: bool, quiet: bool = False) -> list[Path]:
     written = []
     if outdir is not None:
         outdir.mkdir(parents=True, exist_ok=True)
@@ -160,12 +163,20 @@ def _write_outputs(solution, outdir: Path | None, json_path: Path | None,
         if figures:
             from .plotting.figures import save_standard_figures
 
-            written += save_standard_figures(solution, outdir)
+            written += save_standard_figures(solution, outdir,
+                                             progress=None if quiet else _figure_progress)
     if json_path is not None:
         json_path.parent.mkdir(parents=True, exist_ok=True)
         json_path.write_text(json.dumps(solution.to_dict(), separators=(",", ":")))
         written.append(json_path)
     return written
+
+
+def _figure_progress(name: str, index: int, count: int) -> None:
+    """Report each figure as it is drawn (on a terminal, on one rewritten line)."""
+    start, end = ("\r\x1b[K", "") if sys.stderr.isatty() else ("", "\n")
+    print(f"{start}  figure {index}/{count}: {name}", end=end if index < count else "\n",
+          file=sys.stderr, flush=True)
 
 
 def _write_probe_csvs(solution, outdir: Path) -> list[Path]:

@@ -31,6 +31,7 @@ from materials import State
 
 from .fronts import UNKNOWN, FrontRecord, RegionRecord
 from .kinds import FrontKind
+from .numbering import region_numbers
 
 
 @dataclass(frozen=True)
@@ -613,11 +614,13 @@ class Solution:
     def to_dict(self, probes: bool = True) -> dict:
         """A JSON-ready document of the solution (SI units)."""
         regions = []
+        numbers = region_numbers(self)
         for r in self.regions:
             s = r.state
             temperature = r.material.temperature(s.v, s.e) if math.isfinite(s.v) else None
             regions.append({
-                "id": r.id, "layer": r.layer, "material": r.material.name,
+                "number": numbers.get(r.id), "id": r.id, "layer": r.layer,
+                "material": r.material.name,
                 "sigma": s.sigma, "u": s.u, "v": _finite_or_none(s.v),
                 "rho": 1.0 / s.v if s.v > 0 else None, "e": s.e,
                 "plastic_strain": s.plastic_strain,
@@ -643,7 +646,7 @@ class Solution:
             "regions": regions,
             "fronts": fronts,
             "events": events,
-            "spall": [{"X": s.x, "t": s.t, "tension": s.tension, "strength": s.strength,
+            "spall": [{"x": s.x, "t": s.t, "tension": s.tension, "strength": s.strength,
                        "layer": s.layer, "zone": list(s.zone) if s.zone else None}
                       for s in self.spalls],
             "max_tension": self.max_tension(),

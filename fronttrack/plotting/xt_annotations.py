@@ -11,7 +11,7 @@ from matplotlib.patches import Patch
 from shapely.ops import unary_union
 
 from .labels import PageScale
-from .xt_style import CONTACT, EDGE_RAY, GAP, INTERFACE, RELEASE_SHOCK, SHOCK, SPALL, VOID
+from .xt_style import CONTACT, EDGE_RAY, GAP, INTERFACE, RAY, RELEASE_SHOCK, SHOCK, SPALL, VOID
 
 SPALL_CLUSTER = 40.0
 """Spall points closer than this on the page (pt, Manhattan) share one annotation."""
@@ -83,14 +83,16 @@ def _clusters(points, distance) -> list[tuple[int, int]]:
 
 def draw_key(ax, view) -> int:
     """The line-style key above the diagram; returns its number of rows."""
-    kinds = {f.kind for f, _, _ in view.waves}
+    kinds = view.waves.kinds()
     handles = []
-    if any(f.kind == "shock" and f.jump >= 0 for f, _, _ in view.waves):
+    if "shock" in kinds:
         handles.append(Line2D([], [], label="shock", **SHOCK))
-    if any(f.kind == "shock" and f.jump < 0 for f, _, _ in view.waves):
+    if "release" in kinds:
         handles.append(Line2D([], [], label="release shock", **RELEASE_SHOCK))
-    if "ray" in kinds:
-        handles.append(Line2D([], [], label="fan rays", **EDGE_RAY))
+    if kinds & {"ray", "edge"}:
+        handles.append(Line2D([], [], label="fan rays", **RAY))
+    if "edge" in kinds:
+        handles.append(Line2D([], [], label="fan head/tail", **EDGE_RAY))
     site_kinds = {s.kind for s in view.site_segments}
     if "interface" in site_kinds:
         handles.append(Line2D([], [], label="interface", **INTERFACE))
