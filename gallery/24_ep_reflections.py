@@ -21,7 +21,7 @@ from __future__ import annotations
 import common
 from matplotlib.figure import Figure
 
-from fronttrack.plotting import placed_labels, plot_sigma_u, plot_xt
+from fronttrack.plotting import plot_sigma_u, plot_xt
 
 NAME = common.script_name(__file__)
 MM, US, GPA = common.MM, common.US, common.GPA
@@ -64,10 +64,10 @@ def figure_for(end: str) -> list[str]:
         u1 = incident(steel, sigma)
         ax_xt = figure.add_subplot(grid[0, k])
         ax_su = figure.add_subplot(grid[1, k])
-        plot_xt(solution, ax=ax_xt)
-        plot_sigma_u(solution, ax=ax_su, numbers=placed_labels(ax_xt))
+        placed = plot_xt(solution, ax=ax_xt)
+        plot_sigma_u(solution, ax=ax_su, numbers=placed.numbers)
         ax_xt.set_title(f"{sigma * GPA:g} GPa, {what}: X–t", fontsize=10,
-                        pad=common._title_pad(ax_xt))
+                        pad=placed.title_pad)
         ax_su.axhline(steel.hel * GPA, color="#999999", lw=0.7, ls="--", zorder=0)
         ax_su.text(0.99, steel.hel * GPA, "HEL", transform=ax_su.get_yaxis_transform(),
                    ha="right", va="bottom", fontsize=7.5, color="#555555")

@@ -43,9 +43,9 @@ def main() -> None:
     ax_b = figure.add_subplot(grid[1, 1])
 
     # X–t with the spall signal
-    plot_xt(solution, ax=ax_xt)
+    placed = plot_xt(solution, ax=ax_xt)
     ax_xt.set_title("X–t diagram (Lagrangian), regions shaded by stress", fontsize=10,
-                    pad=common._title_pad(ax_xt))
+                    pad=placed.title_pad)
     xs, ts = estimate.spall_x, estimate.spall_t
     ax_xt.plot([xs * MM, length * MM], [ts * US, record.t_rebound * US], color="#2e8b57",
                lw=2.6, zorder=9, solid_capstyle="round")
