@@ -2,11 +2,11 @@
 
 The engine's region ids are internal (they count every region ever made, lattice
 cells included, and run into the thousands).  A figure numbers only the regions it
-can show legibly on a standard X–t diagram, and numbers them in reading order:
-by the time the region begins, then by its position X at that time (the layers at
-``t = 0`` are 1, 2, … from left to right, then the regions the impact makes).  The same numbers appear on the X–t and
-σ–u diagrams and in ``solution.json`` (``regions[k].number``, beside the internal
-``id``).
+can show legibly on a standard X–t diagram, and numbers them in reading order: by
+the time the region begins, then by its position X at that time (the layers at
+``t = 0`` are 1, 2, … from left to right, then the regions the impact makes).  The
+same numbers appear on the X–t and σ–u diagrams and in ``solution.json``
+(``regions[k].number``, beside the internal ``id``).
 
 A region is numbered when it is not inside a fan (``RegionRecord.in_fan``) and a
 circle holding its number fits inside its polygon on the standard X–t axes

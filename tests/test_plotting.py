@@ -246,8 +246,12 @@ def test_nothing_plotted_is_nan(request, name):
             assert all(math.isfinite(v) for v in text.get_position())
 
 
-def test_save_standard_figures_writes_png(tmp_path, hugoniot):
-    paths = save_standard_figures(hugoniot, tmp_path, prefix="cu_")
+@pytest.mark.parametrize("parallel", [False, True])
+def test_save_standard_figures_writes_png(tmp_path, hugoniot, parallel):
+    reported = []
+    paths = save_standard_figures(hugoniot, tmp_path, prefix="cu_", parallel=parallel,
+                                  progress=lambda name, k, n: reported.append((k, n)))
+    assert sorted(reported) == [(k, len(paths)) for k in range(1, len(paths) + 1)]
     names = {p.name for p in paths}
     assert names == {f"cu_{n}.png" for n in FIGURE_NAMES}
     for path in paths:

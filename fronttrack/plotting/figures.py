@@ -16,12 +16,17 @@
 Every figure carries the standard region numbers, those of ``solution.json``
 (``fronttrack.numbering``).  Figures are drawn from the solution as it is: the
 region numbers, the two X–t geometries and the wave paths are computed once and
-shared by the figures that need them.  Figures are built without pyplot's
-global state, so a long batch run does not accumulate open figures.
+shared by the figures that need them.  For a large solution (``PARALLEL_REGIONS``
+regions or more, lattice cells included) on a machine with two or more cores, the
+Eulerian diagram, the slowest, is drawn in a forked process while the others are
+drawn in this one.  Figures are built without pyplot's global state, so a long
+batch run does not accumulate open figures.
 """
 
 from __future__ import annotations
 
+import multiprocessing
+import os
 import pathlib
 from collections.abc import Callable
 
@@ -44,6 +49,12 @@ from .xt_geometry import eulerian_view, lagrangian_view
 DPI = 150
 PROFILE_FRACTIONS = (0.1, 0.3, 0.5, 0.7, 0.9)
 """Instants of the profile figure, as fractions of the scene's end time."""
+
+PARALLEL_REGIONS = 20_000
+"""Regions from which drawing the Eulerian diagram in a second process pays for the fork
+(the demo has 81 000; a scene without lattices a few hundred)."""
+FORKED = ("xt_eulerian",)
+"""The figures drawn in the forked process."""
 
 FIGURE_NAMES = ("xt", "xt_eulerian", "sigma_u", "sigma_rho", "profiles", "probes",
                 "free_surface", "peak_stress", "xt_su")
@@ -134,21 +145,50 @@ def _figure_makers(solution) -> dict[str, Callable[[], Figure]]:
     return makers
 
 
-def save_standard_figures(solution, outdir, prefix="", progress=None) -> list[pathlib.Path]:
+def _parallel(solution, parallel: bool | None) -> bool:
+    """Whether to fork: asked for, or (``None``) a large solution, two cores and ``fork``."""
+    if parallel is None:
+        parallel = (solution.stats.get("regions", 0) >= PARALLEL_REGIONS
+                    and (os.cpu_count() or 1) >= 2)
+    return parallel and "fork" in multiprocessing.get_all_start_methods()
+
+
+def _draw(makers: dict, names, paths: dict, progress, count: int, order: dict) -> None:
+    """Draw and write the figures ``names``."""
+    for name in names:
+        if progress is not None:
+            progress(f"{name}.png", order[name], count)
+        makers[name]().savefig(paths[name], dpi=DPI)
+
+
+def save_standard_figures(solution, outdir, prefix="", progress=None,
+                          parallel: bool | None = None) -> list[pathlib.Path]:
     """Write the standard figures of ``solution`` into ``outdir``; return the paths written.
 
     File names are ``prefix`` followed by the names in the module docstring.
-    ``progress``, if given, is called as ``progress(name, index, count)`` before
-    each figure is drawn (``index`` from 1).
+    ``progress``, if given, is called as ``progress(name, index, count)`` before each
+    figure is drawn (``index`` from 1; the forked ones are reported first).
+    ``parallel``: draw ``FORKED`` in a forked process (``None``: when it pays, see the
+    module docstring).
     """
     outdir = pathlib.Path(outdir)
     outdir.mkdir(parents=True, exist_ok=True)
-    written: list[pathlib.Path] = []
     makers = _figure_makers(solution)
-    for index, (name, make) in enumerate(makers.items(), start=1):
+    paths = {name: outdir / f"{prefix}{name}.png" for name in makers}
+    order = {name: index for index, name in enumerate(makers, start=1)}
+    forked = [name for name in makers if name in FORKED] if _parallel(solution, parallel) else []
+    child = None
+    if forked:
+        child = multiprocessing.get_context("fork").Process(
+            target=_draw, args=(makers, forked, paths, None, len(makers), order))
+        child.start()
         if progress is not None:
-            progress(f"{name}.png", index, len(makers))
-        path = outdir / f"{prefix}{name}.png"
-        make().savefig(path, dpi=DPI)
-        written.append(path)
-    return written
+            for name in forked:
+                progress(f"{name}.png (in a second process)", order[name], len(makers))
+    _draw(makers, [name for name in makers if name not in forked], paths, progress,
+          len(makers), order)
+    if child is not None:
+        child.join()
+        if child.exitcode != 0:  # the fork failed: draw its figures here
+            _draw(makers, forked, paths, None, len(makers), order)
+    return list(paths.values())

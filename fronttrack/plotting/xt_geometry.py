@@ -142,12 +142,10 @@ def eulerian_view(solution) -> XtView:
 
     waves = WaveSegments.of(solution.fronts, ends)
     segments, faces = _eulerian_sites(solution, motions)
-    spalls = []
-    for s in solution.spalls:
-        region = solution.region_at(s.x, s.t)
-        if region.id in motions:
-            spalls.append((float(motions[region.id](s.x, s.t)) * MM, s.t * US))
-
+    spalls = [(float(motions[rid](s.x, s.t)) * MM, s.t * US)
+              for s, rid in zip(solution.spalls, _regions_at_points(
+                  solution, motions, [(s.x, s.t) for s in solution.spalls]), strict=True)
+              if rid is not None]
     def initial_position(x):
         return solution.initial_eulerian(x) * MM
 
@@ -155,6 +153,19 @@ def eulerian_view(solution) -> XtView:
                   voids=_voids(faces), spalls=spalls,
                   layers=_layer_spans(solution.scene, initial_position),
                   t_end=solution.scene.t_end * US)
+
+
+def _regions_at_points(solution, motions, points) -> list[int | None]:
+    """For each point (m, s), a region with a motion that has it as a vertex (``None`` if
+    none): the spall points are event points, so vertices of the regions around them."""
+    wanted = set(points)
+    found: dict[tuple[float, float], int] = {}
+    for region in solution.regions:
+        if region.id in motions:
+            for vertex in region.vertices:
+                if vertex in wanted and vertex not in found:
+                    found[vertex] = region.id
+    return [found.get(point) for point in points]
 
 
 def _eulerian_sites(solution, motions):
