@@ -8,7 +8,8 @@ points, i.e. after scaling X and t by the size the axes have on paper, so that
 "far from the boundary" means far on the page whatever the aspect ratio of mm to
 µs.  The parts of a region under other annotations (``obstacles``: layer names,
 spall and boundary marks) are avoided when the rest still holds the number;
-otherwise the number goes at the pole of the whole region.
+otherwise the number goes at the pole of the whole region if that holds it, and
+at the pole of the part left free by the annotations if nothing does.
 
 Every numbered region is labelled exactly once, at a point inside its own polygon.
 """
@@ -96,10 +97,10 @@ def place_labels(regions: Iterable, polygon_of: Callable, scale: PageScale,
         shape = Polygon(vertices)
         if not shape.is_valid:
             shape = make_valid(shape)
-        pole = None
-        if obstacles is not None:
-            pole = _pole(shape.difference(obstacles), radius)
-        if pole is None:
-            pole = _pole(shape, radius) or polylabel(_largest_part(shape), tolerance=0.25)
+        free = _largest_part(shape.difference(obstacles)) if obstacles is not None else None
+        pole = (_pole(free, radius) if free is not None else None) or _pole(shape, radius)
+        if pole is None:  # too tight for full clearance: still keep off the annotations
+            pole = polylabel(free if free is not None else _largest_part(shape),
+                             tolerance=0.25)
         placed[region.id] = scale.to_data(pole.x, pole.y)
     return placed
