@@ -99,7 +99,7 @@ def main() -> None:
     captions = {
         "free": ("Below the HEL the wave is elastic and the free surface doubles the particle "
                  "velocity. Above it the precursor arrives first and reflects as an elastic "
-                 "release to zero stress (state 3). That release meets the plastic shock, "
+                 "release to zero stress at the surface. That release meets the plastic shock, "
                  "which sends another precursor to the HEL; at 8 GPa this repeats in ever "
                  "shorter steps of 2 HEL/(ρ0 C0) = 75.5 m/s at the surface until the plastic "
                  "shock arrives. The release from a plastic state is elastic over 2 HEL and "
@@ -110,7 +110,7 @@ def main() -> None:
                  "reflects the plastic shock as a plastic shock (slope ρ0 CB) and the wall "
                  "stress σ1 + ρ0 CB u1 is below the acoustic 2 σ1. The precursor reflects "
                  "first, as an elastic reload to the HEL followed by a plastic one to "
-                 "HEL + ρ0 CB HEL/(ρ0 C0) = 3.180 GPa (state 3). A wave below the HEL "
+                 "HEL + ρ0 CB HEL/(ρ0 C0) = 3.180 GPa at the wall. A wave below the HEL "
                  "(1.2 GPa) reflects with a plastic part too, because doubling would exceed "
                  "the HEL."),
     }
