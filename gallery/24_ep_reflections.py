@@ -75,6 +75,9 @@ def figure_for(end: str) -> list[str]:
             ax_su.axhline(2 * steel.hel * GPA, color="#cccccc", lw=0.7, ls="--", zorder=0)
             ax_su.text(0.99, 2 * steel.hel * GPA, "2 HEL", transform=ax_su.get_yaxis_transform(),
                        ha="right", va="bottom", fontsize=7.5, color="#777777")
+        # the σ–u axes span the numbered states: make room for the lines drawn above them
+        shown = 2 * steel.hel if sigma > steel.hel else steel.hel
+        ax_su.set_ylim(top=max(ax_su.get_ylim()[1], 1.1 * shown * GPA))
         record = solution.history("right")
         final = record.states[-1]
         if end == "free":

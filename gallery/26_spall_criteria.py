@@ -18,7 +18,7 @@ on the meeting of the release fans with the three fracture points.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from typing import NamedTuple
 
 import common
 import numpy as np
@@ -61,8 +61,7 @@ def describe(solution) -> str:
             f"{k:g} GPa{power}·µs")
 
 
-@dataclass(frozen=True)
-class Runs:
+class Runs(NamedTuple):
     """The three spall criteria's solutions, the target that cannot spall, the pullback
     estimates of each and its first fracture."""
 

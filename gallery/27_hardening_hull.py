@@ -20,7 +20,7 @@ No scene is solved: this is the construction itself.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from typing import NamedTuple
 
 import common
 import numpy as np
@@ -97,8 +97,7 @@ def names(kinds: list[str]) -> list[str]:
             for k, kind in enumerate(kinds)]
 
 
-@dataclass(frozen=True)
-class Hull:
+class Hull(NamedTuple):
     """The construction for the figure: the loading path (``eps``, ``sigma``), the
     hull's corner indices ``a`` (HEL), ``b`` (fan tail), ``c`` (end), the states along
     the hull (``index``, ``speed``), the velocities behind each wave and the wave speeds
