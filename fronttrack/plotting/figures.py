@@ -17,7 +17,7 @@ Every figure carries the standard region numbers, those of ``solution.json``
 (``fronttrack.numbering``).  Figures are drawn from the solution as it is: the
 region numbers, the two X–t geometries and the wave paths are computed once and
 shared by the figures that need them.  For a large solution (``PARALLEL_REGIONS``
-regions or more, lattice cells included) on a machine with two or more cores, the
+regions or more, lattice cells included) on a Linux machine with two or more cores, the
 Eulerian diagram, the slowest, is drawn in a forked process while the others are
 drawn in this one.  Figures are built without pyplot's global state, so a long
 batch run does not accumulate open figures.
@@ -28,6 +28,7 @@ from __future__ import annotations
 import multiprocessing
 import os
 import pathlib
+import sys
 from collections.abc import Callable
 
 from matplotlib.figure import Figure
@@ -146,10 +147,11 @@ def _figure_makers(solution) -> dict[str, Callable[[], Figure]]:
 
 
 def _parallel(solution, parallel: bool | None) -> bool:
-    """Whether to fork: asked for, or (``None``) a large solution, two cores and ``fork``."""
+    """Whether to fork: asked for, or (``None``) a large solution and two cores on Linux
+    (where forking a process that has drawn with matplotlib's Agg backend is safe)."""
     if parallel is None:
         parallel = (solution.stats.get("regions", 0) >= PARALLEL_REGIONS
-                    and (os.cpu_count() or 1) >= 2)
+                    and (os.cpu_count() or 1) >= 2 and sys.platform.startswith("linux"))
     return parallel and "fork" in multiprocessing.get_all_start_methods()
 
 
