@@ -39,9 +39,9 @@ from .units import parse_quantity, to_si
 from .windows import OpticalWindow, WindowRecord, optical_window, window_record
 
 FIGURES = {name: "plotting" for name in (
-    "placed_labels", "plot_free_surface_velocity", "plot_histories", "plot_peak_stress",
-    "plot_profiles", "plot_sigma_u", "plot_sigma_v", "plot_xt", "save_standard_figures",
-    "xt_and_sigma_u")} | {"plot_window_velocity": "window_figure"}
+    "Placed", "plot_free_surface_velocity", "plot_histories", "plot_peak_stress",
+    "plot_profiles", "plot_sigma_rho", "plot_sigma_u", "plot_xt", "region_numbers",
+    "save_standard_figures", "xt_and_sigma_u")} | {"plot_window_velocity": "window_figure"}
 """Figure functions and the module that holds each, imported on first use."""
 
 __all__ = [

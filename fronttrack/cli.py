@@ -33,6 +33,7 @@ from .cli_sweep import add_sweep_command
 from .impedance_match import format_table, impedance_match, to_json_dict
 from .runner import run
 from .scene_file import load_scene
+from .tension_report import unlimited_tension
 from .units import parse_quantity
 
 USER_ERRORS = (WavediagramError, FileNotFoundError)
@@ -113,7 +114,8 @@ def _run(args) -> int:
             scene, accuracy=dataclasses.replace(scene.accuracy, estimate_error=True))
     solution = _solve(scene, quiet=args.quiet)
     written = _write_outputs(solution, args.output, json_path=args.json,
-                             figures=not args.no_figures, compact=args.json_compact)
+                             figures=not args.no_figures, compact=args.json_compact,
+                             quiet=args.quiet)
     written += write_exports(solution, args)
     if not args.quiet:
         for path in written:
@@ -134,22 +136,7 @@ def _match(args) -> int:
 
 
 def _materials(args) -> int:
-    print(f"{'name':<12} {'rho0 kg/m3':>10} {'c0 m/s':>8} {'s':>6} {'Gamma0':>6} "
-          f"{'spall GPa':>9}  source")
-    for name in library.available("mie-gruneisen"):
-        e = library.entry(name)
-        spall = e.get("spall_strength")
-        spall_text = f"{spall / 1e9:9.2f}" if spall is not None else f"{'-':>9}"
-        print(f"{name:<12} {e['rho0']:>10.0f} {e['c0']:>8.0f} {e['s']:>6.3f} "
-              f"{e['gamma0']:>6.2f} {spall_text}  {e.get('source', '')}")
-    porous = library.available("porous")
-    if porous:
-        print(f"{'porous':<12} {'rho0 kg/m3':>10} {'alpha0':>8} {'crush GPa':>9}  source")
-        for name in porous:
-            e = library.entry(name)
-            rho0 = e["solid_rho0"] / e["alpha0"]
-            print(f"{name:<12} {rho0:>10.0f} {e['alpha0']:>8.3f} "
-                  f"{e.get('crush_stress', 0.0) / 1e9:>9.3f}  {e.get('source', '')}")
+    print(library.listing())
     return 0
 
 
@@ -171,6 +158,8 @@ def _solve(scene, quiet: bool):
               f"{len(solution.spalls)} spall planes, solved in {stats['solve_time']:.3g} s "
               f"(release: {report['release']}, {report['dropped_waves']} waves below "
               f"{report['negligible_stress']:.3g} Pa dropped)", file=sys.stderr)
+        for found in unlimited_tension(solution):
+            print(f"note: {found.message()}", file=sys.stderr)
         estimate = report.get("error_estimate")
         if estimate:
             print(f"estimated error of the probe records: {estimate['sigma'] / 1e6:.3g} MPa, "
@@ -179,7 +168,7 @@ def _solve(scene, quiet: bool):
 
 
 def _write_outputs(solution, outdir: Path | None, json_path: Path | None,
-                   figures: bool, compact: bool = False) -> list[Path]:
+                   figures: bool, compact: bool = False, quiet: bool = False) -> list[Path]:
     written = []
     if outdir is not None:
         outdir.mkdir(parents=True, exist_ok=True)
@@ -189,13 +178,21 @@ def _write_outputs(solution, outdir: Path | None, json_path: Path | None,
         if figures:
             from .plotting.figures import save_standard_figures
 
-            written += save_standard_figures(solution, outdir)
+            written += save_standard_figures(solution, outdir,
+                                             progress=None if quiet else _figure_progress)
     if json_path is not None:
         json_path.parent.mkdir(parents=True, exist_ok=True)
         json_path.write_text(json.dumps(solution.to_dict(polygons=not compact),
                                         separators=(",", ":")))
         written.append(json_path)
     return written
+
+
+def _figure_progress(name: str, index: int, count: int) -> None:
+    """Report each figure as it is drawn (on a terminal, on one rewritten line)."""
+    start, end = ("\r\x1b[K", "") if sys.stderr.isatty() else ("", "\n")
+    print(f"{start}  figure {index}/{count}: {name}", end=end if index < count else "\n",
+          file=sys.stderr, flush=True)
 
 
 def _write_probe_csvs(solution, outdir: Path) -> list[Path]:

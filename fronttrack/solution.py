@@ -31,6 +31,7 @@ from materials import State
 
 from .fronts import UNKNOWN, FrontRecord, RegionRecord
 from .kinds import FrontKind
+from .numbering import region_numbers
 from .windows import window_record
 
 
@@ -633,11 +634,13 @@ class Solution:
         """A JSON-ready document of the solution (SI units); ``polygons=False`` leaves
         out the regions' X–t polygons (most of a large run's document)."""
         regions = []
+        numbers = region_numbers(self)
         for r in self.regions:
             s = r.state
             temperature = r.material.temperature(s.v, s.e) if math.isfinite(s.v) else None
             regions.append({
-                "id": r.id, "layer": r.layer, "material": r.material.name,
+                "number": numbers.get(r.id), "id": r.id, "layer": r.layer,
+                "material": r.material.name,
                 "sigma": s.sigma, "u": s.u, "v": _finite_or_none(s.v),
                 "rho": 1.0 / s.v if s.v > 0 else None, "e": s.e,
                 "plastic_strain": s.plastic_strain,
@@ -663,7 +666,7 @@ class Solution:
             "regions": regions,
             "fronts": fronts,
             "events": events,
-            "spall": [{"X": s.x, "t": s.t, "tension": s.tension, "strength": s.strength,
+            "spall": [{"x": s.x, "t": s.t, "tension": s.tension, "strength": s.strength,
                        "layer": s.layer, "zone": list(s.zone) if s.zone else None}
                       for s in self.spalls],
             "max_tension": self.max_tension(),

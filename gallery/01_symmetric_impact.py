@@ -26,12 +26,12 @@ def main() -> None:
                                wspace=0.25)
     ax_a = figure.add_subplot(grid[0, 0])
     ax_b = figure.add_subplot(grid[0, 1])
-    plot_xt(intact, ax=ax_a)
-    plot_xt(spalled, ax=ax_b)
-    pad = common._title_pad(ax_a)
-    ax_a.set_title("(a) no spall strength: the whole tension region", fontsize=10, pad=pad)
+    placed_a = plot_xt(intact, ax=ax_a)
+    placed_b = plot_xt(spalled, ax=ax_b)
+    ax_a.set_title("(a) no spall strength: the whole tension region", fontsize=10,
+                   pad=placed_a.title_pad)
     ax_b.set_title("(b) spall strength 1.2 GPa (library Al 2024)", fontsize=10,
-                   pad=common._title_pad(ax_b))
+                   pad=placed_b.title_pad)
 
     # (a) the most tensile state, where the two release fans have fully crossed
     region = common.most_tensile_region(intact)

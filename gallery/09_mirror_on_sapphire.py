@@ -57,12 +57,12 @@ def main() -> None:
 
     # X–t zoom on the Al mirror
     mirror = solutions[NAME]
-    plot_xt(mirror, ax=ax_xt, numbers=False)
+    placed = plot_xt(mirror, ax=ax_xt, numbers=False)
     x_mirror = (mirror.scene.length - mirror.scene.layers[-1].thickness) * common.MM
     ax_xt.set_xlim(x_mirror - 0.1, mirror.scene.length * common.MM)
     ax_xt.set_ylim(t0, t0 + 0.1)
     ax_xt.set_title("X–t near the Al mirror (zoom)", fontsize=10,
-                    pad=common._title_pad(ax_xt))
+                    pad=placed.title_pad)
     ax_xt.text(x_mirror - 0.06, t0 + 0.075, "sapphire", ha="center", va="bottom", fontsize=8,
                bbox={"fc": "white", "ec": "none", "alpha": 0.85, "pad": 1})
     ax_xt.text(x_mirror + 0.0125, t0 + 0.075, "Al", ha="center", va="bottom", fontsize=8,

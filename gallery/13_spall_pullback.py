@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import common
 
-from fronttrack.plotting.records import pullback
+from fronttrack.plotting import pullback
 
 NAME = common.script_name(__file__)
 

@@ -19,7 +19,7 @@ import common
 import numpy as np
 from matplotlib.figure import Figure
 
-from fronttrack.plotting import placed_labels, plot_sigma_u, plot_xt
+from fronttrack.plotting import plot_sigma_u, plot_xt
 
 NAME = common.script_name(__file__)
 MM, US, GPA = common.MM, common.US, common.GPA
@@ -67,9 +67,9 @@ def main() -> None:
     ax_h = figure.add_subplot(grid[1, 0])
     ax_v = figure.add_subplot(grid[1, 1])
 
-    plot_xt(solution, ax=ax_xt)
-    plot_sigma_u(solution, ax=ax_su, numbers=placed_labels(ax_xt))
-    pad = common._title_pad(ax_xt)
+    placed = plot_xt(solution, ax=ax_xt)
+    plot_sigma_u(solution, ax=ax_su, numbers=placed.numbers)
+    pad = placed.title_pad
     ax_xt.set_title("X–t diagram (Lagrangian), regions shaded by stress", fontsize=10, pad=pad)
     ax_su.set_title("σ–u diagram: the same numbered states", fontsize=10, pad=pad)
     for x in (x1, xm):

@@ -106,9 +106,9 @@ def main() -> None:
     ax_su = figure.add_subplot(grid[0, 1])
     ax_g = figure.add_subplot(grid[1, :])
 
-    plot_xt(solution, ax=ax_xt)
+    placed = plot_xt(solution, ax=ax_xt)
     ax_xt.set_title("X–t diagram (Lagrangian), regions shaded by stress", fontsize=10,
-                    pad=common._title_pad(ax_xt))
+                    pad=placed.title_pad)
     ax_xt.axvline(GAUGE_X * MM, color=common.RED, lw=1.0, ls=(0, (2, 2)), zorder=7)
     common.note(ax_xt, "gauge plane\nX = 9 mm", xy=(0.60, 0.40), color=common.RED)
     draw_impedance_match(ax_su, steel, quartz, velocity, states, (sigma, u))

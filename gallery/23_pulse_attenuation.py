@@ -20,8 +20,7 @@ import common
 import numpy as np
 from matplotlib.figure import Figure
 
-from fronttrack.plotting import plot_xt
-from fronttrack.plotting.attenuation import peak_stress
+from fronttrack.plotting import peak_stress, plot_xt
 
 NAME = common.script_name(__file__)
 MM, US, GPA = common.MM, common.US, common.GPA
@@ -52,9 +51,9 @@ def main() -> None:
                                bottom=0.13, top=0.9, wspace=0.33, hspace=0.32)
     for k, (solution, amplitude, _) in enumerate((runs[0], runs[2])):
         ax = figure.add_subplot(grid[0, k])
-        plot_xt(solution, ax=ax)
+        placed = plot_xt(solution, ax=ax)
         ax.set_title(f"{amplitude:g} GPa, 1 µs pulse: X–t diagram", fontsize=10,
-                     pad=common._title_pad(ax))
+                     pad=placed.title_pad)
         ax.axvline(x_catch * MM, color="#555555", lw=0.8, ls=(0, (2, 2)), zorder=7)
     ax_p = figure.add_subplot(grid[1, :])
 

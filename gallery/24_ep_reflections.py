@@ -21,7 +21,7 @@ from __future__ import annotations
 import common
 from matplotlib.figure import Figure
 
-from fronttrack.plotting import placed_labels, plot_sigma_u, plot_xt
+from fronttrack.plotting import plot_sigma_u, plot_xt
 
 NAME = common.script_name(__file__)
 MM, US, GPA = common.MM, common.US, common.GPA
@@ -64,10 +64,10 @@ def figure_for(end: str) -> list[str]:
         u1 = incident(steel, sigma)
         ax_xt = figure.add_subplot(grid[0, k])
         ax_su = figure.add_subplot(grid[1, k])
-        plot_xt(solution, ax=ax_xt)
-        plot_sigma_u(solution, ax=ax_su, numbers=placed_labels(ax_xt))
+        placed = plot_xt(solution, ax=ax_xt)
+        plot_sigma_u(solution, ax=ax_su, numbers=placed.numbers)
         ax_xt.set_title(f"{sigma * GPA:g} GPa, {what}: X–t", fontsize=10,
-                        pad=common._title_pad(ax_xt))
+                        pad=placed.title_pad)
         ax_su.axhline(steel.hel * GPA, color="#999999", lw=0.7, ls="--", zorder=0)
         ax_su.text(0.99, steel.hel * GPA, "HEL", transform=ax_su.get_yaxis_transform(),
                    ha="right", va="bottom", fontsize=7.5, color="#555555")
@@ -75,6 +75,9 @@ def figure_for(end: str) -> list[str]:
             ax_su.axhline(2 * steel.hel * GPA, color="#cccccc", lw=0.7, ls="--", zorder=0)
             ax_su.text(0.99, 2 * steel.hel * GPA, "2 HEL", transform=ax_su.get_yaxis_transform(),
                        ha="right", va="bottom", fontsize=7.5, color="#777777")
+        # the σ–u axes span the numbered states: make room for the lines drawn above them
+        shown = 2 * steel.hel if sigma > steel.hel else steel.hel
+        ax_su.set_ylim(top=max(ax_su.get_ylim()[1], 1.1 * shown * GPA))
         record = solution.history("right")
         final = record.states[-1]
         if end == "free":
@@ -99,7 +102,7 @@ def main() -> None:
     captions = {
         "free": ("Below the HEL the wave is elastic and the free surface doubles the particle "
                  "velocity. Above it the precursor arrives first and reflects as an elastic "
-                 "release to zero stress (state 3). That release meets the plastic shock, "
+                 "release to zero stress at the surface. That release meets the plastic shock, "
                  "which sends another precursor to the HEL; at 8 GPa this repeats in ever "
                  "shorter steps of 2 HEL/(ρ0 C0) = 75.5 m/s at the surface until the plastic "
                  "shock arrives. The release from a plastic state is elastic over 2 HEL and "
@@ -110,7 +113,7 @@ def main() -> None:
                  "reflects the plastic shock as a plastic shock (slope ρ0 CB) and the wall "
                  "stress σ1 + ρ0 CB u1 is below the acoustic 2 σ1. The precursor reflects "
                  "first, as an elastic reload to the HEL followed by a plastic one to "
-                 "HEL + ρ0 CB HEL/(ρ0 C0) = 3.180 GPa (state 3). A wave below the HEL "
+                 "HEL + ρ0 CB HEL/(ρ0 C0) = 3.180 GPa at the wall. A wave below the HEL "
                  "(1.2 GPa) reflects with a plastic part too, because doubling would exceed "
                  "the HEL."),
     }

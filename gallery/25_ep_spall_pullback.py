@@ -43,16 +43,16 @@ def main() -> None:
     ax_b = figure.add_subplot(grid[1, 1])
 
     # X–t with the spall signal
-    plot_xt(solution, ax=ax_xt)
+    placed = plot_xt(solution, ax=ax_xt)
     ax_xt.set_title("X–t diagram (Lagrangian), regions shaded by stress", fontsize=10,
-                    pad=common._title_pad(ax_xt))
+                    pad=placed.title_pad)
     xs, ts = estimate.spall_x, estimate.spall_t
     ax_xt.plot([xs * MM, length * MM], [ts * US, record.t_rebound * US], color="#2e8b57",
                lw=2.6, zorder=9, solid_capstyle="round")
-    ax_xt.annotate("spall signal (elastic, at C0)\nfrom the first fracture\nto the rear face",
+    ax_xt.annotate("spall signal (elastic, C0):\nfirst fracture → rear face",
                    (0.75 * xs * MM + 0.25 * length * MM,
-                    (0.75 * ts + 0.25 * record.t_rebound) * US), xytext=(11.0, 0.75),
-                   textcoords="data", fontsize=8, color="#2e8b57", ha="left", va="top",
+                    (0.75 * ts + 0.25 * record.t_rebound) * US), xytext=(14.9, 0.06),
+                   textcoords="data", fontsize=7.5, color="#2e8b57", ha="right", va="bottom",
                    bbox={"boxstyle": "round,pad=0.25", "fc": "white", "ec": "#2e8b57",
                          "lw": 0.6},
                    arrowprops={"arrowstyle": "->", "color": "#2e8b57", "lw": 0.8})

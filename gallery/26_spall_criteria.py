@@ -18,6 +18,8 @@ on the meeting of the release fans with the three fracture points.
 
 from __future__ import annotations
 
+from typing import NamedTuple
+
 import common
 import numpy as np
 from matplotlib.figure import Figure
@@ -59,38 +61,47 @@ def describe(solution) -> str:
             f"{k:g} GPa{power}·µs")
 
 
-def main() -> None:
+class Runs(NamedTuple):
+    """The three spall criteria's solutions, the target that cannot spall, the pullback
+    estimates of each and its first fracture."""
+
+    solutions: list
+    intact: object
+    estimates: list
+    firsts: list
+
+    @property
+    def material(self):
+        return self.solutions[0].scene.layers[-1].material
+
+    @property
+    def threshold(self) -> float:
+        """Threshold (GPa) of the time-dependent criteria (b) and (c)."""
+        return self.solutions[1].scene.spall_criterion.threshold * GPA
+
+
+def solve_all() -> Runs:
+    """Run the scene with each criterion, and without spall."""
     solutions = [common.solve(f"{NAME}_{key}") for key, *_ in CASES]
     intact = common.solve(f"{NAME}_nospall")
-    t_end = intact.scene.t_end
-    material = solutions[0].scene.layers[-1].material
-    estimates = [spall_estimates(s) for s in solutions]
-    firsts = [min(s.spalls, key=lambda p: p.t) for s in solutions]
+    return Runs(solutions, intact, [spall_estimates(s) for s in solutions],
+                [min(s.spalls, key=lambda p: p.t) for s in solutions])
 
-    figure = Figure(figsize=(14.0, 11.6))
-    top = figure.add_gridspec(1, 3, left=0.045, right=0.95, top=0.895, bottom=0.565,
-                              wspace=0.3)
-    low = figure.add_gridspec(2, 3, left=0.055, right=0.95, top=0.475, bottom=0.17,
-                              wspace=0.3, hspace=0.12, width_ratios=(1.15, 1.0, 0.95))
-    ax_v = figure.add_subplot(low[:, 0])
-    ax_s = figure.add_subplot(low[0, 1])
-    ax_d = figure.add_subplot(low[1, 1], sharex=ax_s)
-    ax_z = figure.add_subplot(low[:, 2])
 
-    # --- the three X–t diagrams -------------------------------------------------------------
+def draw_xt_panels(figure, top, runs: Runs) -> None:
+    """The three X–t diagrams, each with its first fracture marked."""
+    solutions, firsts = runs.solutions, runs.firsts
     for k, ((_key, label, color, marker), sol, first) in enumerate(
             zip(CASES, solutions, firsts, strict=True)):
         ax = figure.add_subplot(top[0, k])
-        plot_xt(sol, ax=ax, numbers=False)
-        ax.set_title(f"{label}: {describe(sol)}", fontsize=9.5, pad=common._title_pad(ax),
+        placed = plot_xt(sol, ax=ax, numbers=False)
+        ax.set_title(f"{label}: {describe(sol)}", fontsize=9.5, pad=placed.title_pad,
                      color=color)
         for text in list(ax.texts):   # the engine's "spall n" labels crowd: markers + note
             if text.get_text().startswith("spall"):
                 text.remove()
-        for collection in ax.collections:   # one colorbar label, on the last panel
-            bar = getattr(collection, "colorbar", None)
-            if bar is not None and k < len(CASES) - 1:
-                bar.set_label("")
+        if k < len(CASES) - 1:   # one colorbar label, on the last panel
+            placed.colorbar.set_label("")
         ax.plot([first.x * MM], [first.t * US], marker=marker, ms=7, mfc="none", mec=color,
                 mew=1.6, zorder=23, ls="none")
         more = len(sol.spalls) - 1
@@ -99,7 +110,12 @@ def main() -> None:
                     + (f"\n+{more} later plane{'s' if more > 1 else ''}" if more else ""),
                     xy=(0.03, 0.97))
 
-    # --- rear free-surface records (zoom on the pullback) ------------------------------------
+
+
+def draw_records(ax_v, runs: Runs) -> None:
+    """The rear free-surface records, zoomed on the pullback of each criterion."""
+    intact, solutions, estimates, firsts = runs.intact, runs.solutions, runs.estimates, runs.firsts
+    material = runs.material
     edges, velocity = common.surface_velocity(intact)
     common.plot_record(ax_v, edges, velocity, color="#888888", lw=1.1, ls="--",
                        label="target that cannot spall")
@@ -130,7 +146,12 @@ def main() -> None:
                 f"ρ0 = {material.rho0:.0f} kg/m³, c0 = {estimates[0].c0:.0f} m/s\n"
                 + "\n".join(lines), xy=(0.02, 0.98), fontsize=7.5)
 
-    # --- tension and damage at the fracture planes (bonded solution) -------------------------
+
+
+def draw_tension_and_damage(ax_s, ax_d, runs: Runs) -> None:
+    """Tension and damage histories at the fracture planes, on the intact solution."""
+    intact, solutions, firsts = runs.intact, runs.solutions, runs.firsts
+    t_end = intact.scene.t_end
     t0 = min(f.t for f in firsts) - 0.03e-6
     for (_key, label, color, marker), sol, first in zip(CASES, solutions, firsts, strict=True):
         history = intact.history(first.x)
@@ -147,8 +168,8 @@ def main() -> None:
             print(f"{label}: damage of the intact solution at the fracture {reached:.12f}")
             ax_d.plot([first.t * US], [1.0], marker=marker, ms=6, mfc="white", mec=color,
                       mew=1.4, zorder=12, ls="none")
-    strength = material.spall_strength * GPA
-    threshold = solutions[1].scene.spall_criterion.threshold * GPA
+    strength = runs.material.spall_strength * GPA
+    threshold = runs.threshold
     ax_s.axhline(strength, color=CASES[0][2], lw=0.8, ls=":")
     ax_s.text(t0 * US + 0.002, strength, f"spall strength {strength:.1f} GPa", fontsize=7,
               color=CASES[0][2], va="bottom")
@@ -168,12 +189,13 @@ def main() -> None:
     ax_d.set_ylabel("damage K/K_c of (b), (c)")
     ax_d.grid(True, lw=0.3, alpha=0.5)
 
-    # --- zoom on the meeting of the fans -----------------------------------------------------
-    plot_xt(intact, ax=ax_z, numbers=False)
-    for collection in ax_z.collections:
-        bar = getattr(collection, "colorbar", None)
-        if bar is not None:
-            bar.set_label("stress σ (GPa)", fontsize=8)
+
+
+def draw_zoom(ax_z, runs: Runs) -> None:
+    """Zoom on the crossing fans of the intact target, with the three fracture points."""
+    intact, firsts = runs.intact, runs.firsts
+    placed = plot_xt(intact, ax=ax_z, numbers=False)
+    placed.colorbar.set_label("stress σ (GPa)", fontsize=8)
     legend = ax_z.get_legend()
     if legend is not None:
         legend.remove()
@@ -187,8 +209,14 @@ def main() -> None:
     ax_z.legend(fontsize=7.5, loc="lower left", framealpha=0.95)
     ax_z.set_title("zoom: fracture points in the crossing fans", fontsize=10)
 
-    figure.suptitle("Spall criteria on one impact: Al 2024, 1 mm on 3 mm at 300 m/s "
-                    "(unbonded, free ends)", fontsize=12, y=0.985)
+
+
+def caption_text(runs: Runs) -> str:
+    """The figure's caption: where and when each criterion breaks, and what the pullback says."""
+    solutions, estimates, firsts = runs.solutions, runs.estimates, runs.firsts
+    strength = runs.material.spall_strength * GPA
+    threshold = runs.threshold
+    t_end = runs.intact.scene.t_end
     a, b, c = firsts
     ea, eb, ec = estimates
     spacing = solutions[0].scene.accuracy.spall_spacing * MM
@@ -218,7 +246,28 @@ def main() -> None:
             f"them; spall_spacing = {spacing:.1f} mm keeps planes at least that far apart "
             f"({len(solutions[0].spalls)}, {len(solutions[1].spalls)}, "
             f"{len(solutions[2].spalls)} planes by {t_end * US:.2f} µs).")
-    common.caption(figure, text, width=185)
+    return text
+
+
+def main() -> None:
+    runs = solve_all()
+    solutions, estimates, firsts = runs.solutions, runs.estimates, runs.firsts
+    strength = runs.material.spall_strength * GPA
+    figure = Figure(figsize=(14.0, 11.6))
+    top = figure.add_gridspec(1, 3, left=0.045, right=0.95, top=0.895, bottom=0.565,
+                              wspace=0.3)
+    low = figure.add_gridspec(2, 3, left=0.055, right=0.95, top=0.475, bottom=0.17,
+                              wspace=0.3, hspace=0.12, width_ratios=(1.15, 1.0, 0.95))
+    ax_s = figure.add_subplot(low[0, 1])
+    draw_xt_panels(figure, top, runs)
+    draw_records(figure.add_subplot(low[:, 0]), runs)
+    draw_tension_and_damage(ax_s, figure.add_subplot(low[1, 1], sharex=ax_s), runs)
+    draw_zoom(figure.add_subplot(low[:, 2]), runs)
+    figure.suptitle("Spall criteria on one impact: Al 2024, 1 mm on 3 mm at 300 m/s "
+                    "(unbonded, free ends)", fontsize=12, y=0.985)
+    common.caption(figure, caption_text(runs), width=185)
+    a, b, c = firsts
+    ea, eb, ec = estimates
     common.save(figure, NAME,
                 f"Al 2024 1 mm on 3 mm at 300 m/s with three spall criteria: first fracture "
                 f"(a) threshold {strength:.1f} GPa X = {a.x * MM:.3f} mm, t = {a.t * US:.4f} µs; "
@@ -235,6 +284,8 @@ def main() -> None:
               f"T = {first.tension * GPA:.4f} GPa, du = {est.record.delta_u:.2f} m/s, "
               f"acoustic = {est.acoustic_longitudinal * GPA:.4f} GPa, "
               f"carried = {est.carried_tension * GPA:.4f} GPa, planes = {len(sol.spalls)}")
+
+
 
 
 if __name__ == "__main__":

@@ -20,12 +20,13 @@ No scene is solved: this is the construction itself.
 from __future__ import annotations
 
 import math
+from typing import NamedTuple
 
 import common
 import numpy as np
 from matplotlib.figure import Figure
 
-from fronttrack.plotting.stress_shading import light_cmap
+from fronttrack.plotting import light_cmap
 from materials.finite_plastic import concave_hull_waves, monotone_loading_path
 
 NAME = common.script_name(__file__)
@@ -96,7 +97,32 @@ def names(kinds: list[str]) -> list[str]:
             for k, kind in enumerate(kinds)]
 
 
-def main() -> None:
+class Hull(NamedTuple):
+    """The construction for the figure: the loading path (``eps``, ``sigma``), the
+    hull's corner indices ``a`` (HEL), ``b`` (fan tail), ``c`` (end), the states along
+    the hull (``index``, ``speed``), the velocities behind each wave and the wave speeds
+    (m/s), and the weaker and stronger loads compared in the caption."""
+
+    eps: np.ndarray
+    sigma: np.ndarray
+    a: int
+    b: int
+    c: int
+    index: np.ndarray
+    speed: np.ndarray
+    u_a: float
+    u_b: float
+    u_c: float
+    u_precursor: float
+    c_head: float
+    c_tail: float
+    u_shock: float
+    weak: tuple
+    strong: tuple
+
+
+def build() -> Hull:
+    """The hull of the loading path to ``EPS_END``, and of a weaker and a stronger load."""
     eps, sigma, pieces = construction(EPS_END)
     kinds = [p["kind"] for p in pieces]
     if kinds != ["shock", "fan", "shock"]:
@@ -105,25 +131,17 @@ def main() -> None:
     a, b, c = precursor["end"], fan["end"], shock["end"]
     index, u, speed = hull_states(eps, sigma, pieces)
     u_at = dict(zip(index.tolist(), u.tolist(), strict=True))
-    u_a, u_b, u_c = u_at[a], u_at[b], u_at[c]
-    u_precursor, (c_head, c_tail), u_shock = (precursor["speeds"][0], fan["speeds"],
-                                              shock["speeds"][0])
-    weak_eps, weak_sigma, weak_pieces = construction(EPS_WEAK)
-    weak_kinds = [p["kind"] for p in weak_pieces]
-    strong_eps, strong_sigma, strong_pieces = construction(2.0 * EPS_END)
-    strong_fan = strong_pieces[1] if len(strong_pieces) > 1 else None
-    c_elastic = math.sqrt(C0**2 + 4.0 * G / (3.0 * RHO))
+    (c_head, c_tail) = fan["speeds"]
+    return Hull(eps, sigma, a, b, c, index, speed, u_at[a], u_at[b], u_at[c],
+                precursor["speeds"][0], c_head, c_tail, shock["speeds"][0],
+                construction(EPS_WEAK), construction(2.0 * EPS_END))
 
-    figure = Figure(figsize=(13.0, 10.6))
-    grid = figure.add_gridspec(2, 2, left=0.065, right=0.985, top=0.925, bottom=0.2,
-                               wspace=0.22, hspace=0.42)
-    ax_p = figure.add_subplot(grid[0, 0])
-    ax_h = figure.add_subplot(grid[0, 1])
-    ax_xt = figure.add_subplot(grid[1, 0])
-    ax_s = figure.add_subplot(grid[1, 1])
+
+def draw_path(ax_p, h: Hull) -> None:
+    """The loading path σ(ε), its upper concave hull, and the Voce law (inset)."""
+    eps, sigma, a, b, c = h.eps, h.sigma, h.a, h.b, h.c
     pct = 100.0
-
-    # --- the loading path and its hull ---------------------------------------------------------
+    # the loading path and its hull ---------------------------------------------------------
     eps_hel = eps[a]
     plastic = eps >= eps_hel
     for y, label in ((Y0, "plastic branches at Y = Y0 (lower), Ysat (upper)"), (Y_SAT, None)):
@@ -160,7 +178,16 @@ def main() -> None:
     inset.set_ylim(0.0, 0.7)
     inset.grid(True, lw=0.3, alpha=0.5)
 
-    # --- the sheared view ------------------------------------------------------------------------
+
+
+def draw_sheared(ax_h, h: Hull) -> None:
+    """The path minus the last shock's Rayleigh line: the hull's chords and fan stand out."""
+    (eps, sigma, a, b, c, u_precursor, c_head, c_tail, u_shock) = (
+        h.eps, h.sigma, h.a, h.b, h.c, h.u_precursor, h.c_head, h.c_tail, h.u_shock)
+    pct = 100.0
+    plastic = eps >= eps[a]
+    weak_sigma = h.weak[1]
+    # the sheared view ------------------------------------------------------------------------
     k_shift = RHO * u_shock**2           # subtract the Rayleigh line of the last shock
     def sheared(e, s):
         return (np.asarray(s) - k_shift * np.asarray(e)) * 1e-6
@@ -221,7 +248,14 @@ def main() -> None:
                    fontsize=10)
     ax_h.grid(True, lw=0.3, alpha=0.5)
 
-    # --- X–t: lines from the origin ---------------------------------------------------------------
+
+
+def draw_xt(ax_xt, h: Hull) -> tuple[float, float, float]:
+    """The composite wave in the X–t plane; returns the X (mm) of precursor, fan head, tail."""
+    (sigma, a, b, c, index, speed, u_a, u_c, u_precursor, c_head, c_tail, u_shock) = (
+        h.sigma, h.a, h.b, h.c, h.index, h.speed, h.u_a, h.u_c, h.u_precursor, h.c_head,
+        h.c_tail, h.u_shock)
+    # lines from the origin ---------------------------------------------------------------
     t_top = T_SHOW * US
     cmap, top = light_cmap(), sigma[c] * GPA
 
@@ -275,7 +309,14 @@ def main() -> None:
                   arrowprops={"arrowstyle": "-", "color": "#333333", "lw": 0.6})
     ax_xt.indicate_inset_zoom(zoom, edgecolor="#888888")
 
-    # --- the stress profile -------------------------------------------------------------------
+    return x_pre, x_head, x_tail
+
+
+def draw_profile(ax_s, h: Hull, x_pre: float, x_head: float, x_tail: float) -> None:
+    """The stress profile at ``T_SHOW``: step, ramp, step."""
+    (eps, sigma, a, b, c, index, speed, u_precursor) = (
+        h.eps, h.sigma, h.a, h.b, h.c, h.index, h.speed, h.u_precursor)
+    # the stress profile -------------------------------------------------------------------
     xs, values = profile(eps, sigma, index, speed, T_SHOW)
     ax_s.plot(xs, values, color=PATH, lw=1.6)
     x0 = x_tail - 0.9
@@ -301,8 +342,18 @@ def main() -> None:
                 f"shock {sigma[b] * GPA:.2f} → {sigma[c] * GPA:.2f} GPa", offset=(-20, 10),
                 color=CHORD, ha="right")
 
-    figure.suptitle("Saturating (Voce) hardening: the convex-hull construction gives "
-                    "precursor + fan + shock", fontsize=12, y=0.985)
+
+
+def caption_text(h: Hull) -> str:
+    """The figure's caption: the material, the hull's three waves and the compared loads."""
+    (eps, sigma, a, b, c, u_a, u_b, u_c, u_precursor, c_head, c_tail, u_shock) = (
+        h.eps, h.sigma, h.a, h.b, h.c, h.u_a, h.u_b, h.u_c, h.u_precursor, h.c_head, h.c_tail,
+        h.u_shock)
+    pct = 100.0
+    weak_kinds = [p["kind"] for p in h.weak[2]]
+    strong_eps, strong_sigma, strong_pieces = h.strong
+    strong_fan = strong_pieces[1] if len(strong_pieces) > 1 else None
+    c_elastic = math.sqrt(C0**2 + 4.0 * G / (3.0 * RHO))
     strong = (f"a load twice as strong ({strong_sigma[-1] * GPA:.2f} GPa) shrinks the fan to "
               f"{strong_fan['speeds'][0]:.0f} → {strong_fan['speeds'][1]:.0f} m/s (to "
               f"ε = {strong_eps[strong_fan['end']] * pct:.2f} %) and its shock carries the rest"
@@ -323,17 +374,33 @@ def main() -> None:
             f"load ending inside the concave stretch (W, ε = {EPS_WEAK * pct:.0f} %) gives "
             f"{' + '.join(names(weak_kinds))}; {strong}. Linear hardening keeps the branch convex: "
             f"precursor + one plastic shock.")
-    common.caption(figure, text, width=170)
+    return text
+
+
+def main() -> None:
+    h = build()
+    eps, sigma, a, b, c = h.eps, h.sigma, h.a, h.b, h.c
+    weak_kinds, strong_pieces = [p["kind"] for p in h.weak[2]], h.strong[2]
+    figure = Figure(figsize=(13.0, 10.6))
+    grid = figure.add_gridspec(2, 2, left=0.065, right=0.985, top=0.925, bottom=0.2,
+                               wspace=0.22, hspace=0.42)
+    draw_path(figure.add_subplot(grid[0, 0]), h)
+    draw_sheared(figure.add_subplot(grid[0, 1]), h)
+    x_pre, x_head, x_tail = draw_xt(figure.add_subplot(grid[1, 0]), h)
+    draw_profile(figure.add_subplot(grid[1, 1]), h, x_pre, x_head, x_tail)
+    figure.suptitle("Saturating (Voce) hardening: the convex-hull construction gives "
+                    "precursor + fan + shock", fontsize=12, y=0.985)
+    common.caption(figure, caption_text(h), width=170)
     common.save(figure, NAME,
                 f"Voce hardening (Y0 {Y0 * GPA:.2f} → Ysat {Y_SAT * GPA:.2f} GPa) makes the "
                 f"plastic loading path concave beyond the HEL: loading to {sigma[c] * GPA:.2f} "
-                f"GPa gives a precursor at {u_precursor:.0f} m/s to {sigma[a] * GPA:.3f} GPa, "
-                f"a fan {c_head:.0f} → {c_tail:.0f} m/s to {sigma[b] * GPA:.2f} GPa and a "
-                f"shock at {u_shock:.0f} m/s (the upper concave hull of σ(ε)).")
-    print(f"precursor U = {u_precursor:.2f} m/s to {sigma[a] * GPA:.4f} GPa (eps "
-          f"{eps[a]:.6f}, u {u_a:.3f}); fan {c_head:.2f} -> {c_tail:.2f} m/s to "
-          f"{sigma[b] * GPA:.4f} GPa (eps {eps[b]:.6f}, u {u_b:.3f}); shock {u_shock:.2f} "
-          f"m/s to {sigma[c] * GPA:.4f} GPa (u {u_c:.3f}); weak {weak_kinds}; "
+                f"GPa gives a precursor at {h.u_precursor:.0f} m/s to {sigma[a] * GPA:.3f} GPa, "
+                f"a fan {h.c_head:.0f} → {h.c_tail:.0f} m/s to {sigma[b] * GPA:.2f} GPa and a "
+                f"shock at {h.u_shock:.0f} m/s (the upper concave hull of σ(ε)).")
+    print(f"precursor U = {h.u_precursor:.2f} m/s to {sigma[a] * GPA:.4f} GPa (eps "
+          f"{eps[a]:.6f}, u {h.u_a:.3f}); fan {h.c_head:.2f} -> {h.c_tail:.2f} m/s to "
+          f"{sigma[b] * GPA:.4f} GPa (eps {eps[b]:.6f}, u {h.u_b:.3f}); shock {h.u_shock:.2f} "
+          f"m/s to {sigma[c] * GPA:.4f} GPa (u {h.u_c:.3f}); weak {weak_kinds}; "
           f"strong {[p['kind'] for p in strong_pieces]}")
 
 

@@ -33,7 +33,7 @@ import numpy as np  # noqa: E402
 from matplotlib.figure import Figure  # noqa: E402
 from PIL import Image  # noqa: E402
 
-from fronttrack.plotting import placed_labels, plot_sigma_u, plot_xt  # noqa: E402
+from fronttrack.plotting import number_list, plot_sigma_u, plot_xt, region_numbers  # noqa: E402
 from fronttrack.runner import run  # noqa: E402
 from fronttrack.scene_file import load_scene  # noqa: E402
 
@@ -143,10 +143,11 @@ def xt_su_record_figure(solution, title: str, size=(13.0, 8.6), bottom: float = 
 
 
 def _draw_xt_and_sigma_u(solution, figure, ax_xt, ax_su, title: str, su_title_pad: bool):
-    """The X–t diagram, then the σ–u diagram numbered like it, with titles."""
-    plot_xt(solution, ax=ax_xt)
-    plot_sigma_u(solution, ax=ax_su, numbers=placed_labels(ax_xt))
-    pad = _title_pad(ax_xt)
+    """The X–t diagram, then the σ–u diagram numbered like it (the numbers of the
+    solution's JSON, ``region_numbers``), with titles."""
+    placed = plot_xt(solution, ax=ax_xt, numbers=region_numbers(solution))
+    plot_sigma_u(solution, ax=ax_su, numbers=placed.numbers)
+    pad = placed.title_pad
     ax_xt.set_title("X–t diagram (Lagrangian), regions shaded by stress", fontsize=10,
                     pad=pad)
     ax_su.set_title("σ–u diagram: the same numbered states", fontsize=10,
@@ -162,11 +163,20 @@ def xt_record_figure(solution, title: str, size=(13.0, 6.8), bottom: float = 0.2
                                bottom=bottom, top=top, wspace=0.25)
     ax_xt = figure.add_subplot(grid[0, 0])
     ax_record = figure.add_subplot(grid[0, 1])
-    plot_xt(solution, ax=ax_xt, numbers=numbers)
+    placed = plot_xt(solution, ax=ax_xt, numbers=numbers)
     ax_xt.set_title("X–t diagram (Lagrangian), regions shaded by stress", fontsize=10,
-                    pad=_title_pad(ax_xt))
+                    pad=placed.title_pad)
     figure.suptitle(title, fontsize=12, y=0.985)
     return figure, ax_xt, ax_record
+
+
+def numbers_at(solution, *points) -> str:
+    """The region numbers (as on the figures and in the JSON) at the points ``(X, t)`` (m, s),
+    as a list with ranges ("3, 4"); regions without a number are left out."""
+    numbers = region_numbers(solution)
+    found = {numbers[r.id] for r in (solution.region_at(x, t) for x, t in points)
+             if r.id in numbers}
+    return number_list(sorted(found)) if found else "unnumbered"
 
 
 def plot_record(ax, edges, values, label=None, color=BLUE, **kwargs):
@@ -174,12 +184,6 @@ def plot_record(ax, edges, values, label=None, color=BLUE, **kwargs):
     ax.stairs(values, edges, baseline=None, color=color, lw=kwargs.pop("lw", 1.5),
               label=label, **kwargs)
     ax.grid(True, lw=0.3, alpha=0.5)
-
-
-def _title_pad(ax) -> float:
-    from fronttrack.plotting.xt import title_pad
-
-    return title_pad(ax)
 
 
 def note(ax, text: str, xy=(0.02, 0.97), ha="left", va="top", **kwargs):

@@ -20,10 +20,11 @@ Models and fields (``MODELS``):
   ``poisson``, converted to ``lambda = E nu / ((1 + nu)(1 - 2 nu))`` and
   ``mu = E / (2 (1 + nu))``.  Optional ``spall_strength``.
 - ``"ideal-gas"``: ``gamma``, ``rho0``; optional ``cv``.
-- ``"elastic-plastic"``: ``rho0``, ``lambda``, ``mu`` (Lamé constants, Pa) and
-  ``yield_strength`` (Pa, the yield stress Y in simple tension); optional
-  ``spall_strength``.  The small-strain ideal elastic–plastic solid of
-  ``materials.elastic_plastic``.
+- ``"elastic-plastic"``: ``rho0``, ``yield_strength`` (Pa, the yield stress Y in
+  simple tension) and exactly one pair of elastic constants: ``lambda`` and ``mu``
+  (Lamé constants, Pa), ``shear_modulus`` and ``poisson``, or ``E`` and
+  ``poisson`` (converted to Lamé constants); optional ``spall_strength``.  The
+  small-strain ideal elastic–plastic solid of ``materials.elastic_plastic``.
 - ``"finite-plastic"``: ``rho0``, ``c0``, ``s``, ``gamma0`` (the Mie–Grüneisen
   pressure), ``yield_strength`` (Pa) and exactly one of ``shear_modulus`` (Pa) or
   ``poisson`` (with ``K = rho0 c0^2``); optional ``hardening`` (Pa, linear:
@@ -44,6 +45,19 @@ Models and fields (``MODELS``):
 
 A solid without ``spall_strength`` never spalls (``math.inf``).  ``description``
 and ``source`` (strings) may accompany any specification and are not used.
+
+Strength from the library: an entry with ``shear_modulus`` and ``yield_strength``
+(or ``hel``, the Hugoniot elastic limit, from which ``Y = hel 2G / (K + 4G/3)``
+with ``K = rho0 c0^2``) can be built as an elastic–plastic solid (``lambda = K -
+2G/3``, ``mu = G``) or a finite-plastic one (its Mie–Grüneisen pressure plus
+strength): ``get(name, model="elastic-plastic")``, or, in a specification,
+``library = "NAME"``, which takes every field the specification does not give
+from that entry (``strength_spec``).
+
+Names: a library key, or any of its aliases, without regard to case.  The
+element's symbol and name resolve to the same entry ("Al", "aluminum" and
+"aluminium" are Al 6061-T6; "Cu" and "copper" OFHC copper).  An unknown name is
+answered with the entries whose name or alias begins like it or is close to it.
 """
 
 from __future__ import annotations
@@ -71,8 +85,9 @@ MODELS: dict[str, dict[str, tuple[str, ...]]] = {
     "linear-elastic": {"required": ("rho0",),
                        "optional": ("C", "lambda", "mu", "E", "poisson", "spall_strength")},
     "ideal-gas": {"required": ("gamma", "rho0"), "optional": ("cv",)},
-    "elastic-plastic": {"required": ("rho0", "lambda", "mu", "yield_strength"),
-                        "optional": ("spall_strength",)},
+    "elastic-plastic": {"required": ("rho0", "yield_strength"),
+                        "optional": ("lambda", "mu", "shear_modulus", "E", "poisson",
+                                     "spall_strength")},
     "finite-plastic": {"required": ("rho0", "c0", "s", "gamma0", "yield_strength"),
                        "optional": ("shear_modulus", "poisson", "hardening",
                                     "spall_strength")},
@@ -87,13 +102,17 @@ MODELS: dict[str, dict[str, tuple[str, ...]]] = {
 stiffness choices, see ``_LINEAR_ELASTIC_CHOICES``)."""
 
 _LINEAR_ELASTIC_CHOICES = (("C",), ("lambda", "mu"), ("E", "poisson"))
+_ELASTIC_PLASTIC_CHOICES = (("lambda", "mu"), ("shear_modulus", "poisson"), ("E", "poisson"))
+
+STRENGTH_MODELS = ("elastic-plastic", "finite-plastic")
+"""Models a library entry with strength data can be built as (``get(name, model)``)."""
 
 FIELD_DIMENSIONS: dict[str, str] = {
     "rho0": "density", "c0": "velocity", "s": "dimensionless", "gamma0": "dimensionless",
     "cv": "specific_heat", "spall_strength": "stress", "up_max": "velocity",
     "C": "velocity", "lambda": "stress", "mu": "stress", "E": "stress",
     "poisson": "dimensionless", "gamma": "dimensionless", "yield_strength": "stress",
-    "shear_modulus": "stress", "hardening": "stress", "solid_rho0": "density",
+    "shear_modulus": "stress", "hardening": "stress", "hel": "stress", "solid_rho0": "density",
     "alpha0": "dimensionless", "crush_stress": "stress", "compaction_stress": "stress",
     "crush_exponent": "dimensionless", "crush_scale": "stress", "c1": "velocity",
     "s1": "dimensionless", "c2": "velocity", "s2": "dimensionless",
@@ -105,7 +124,11 @@ that write quantities with units (the dimension names of ``fronttrack.units``)."
 TEXT_FIELDS = ("description", "source")
 """Descriptive string fields any specification may carry."""
 
-_LIBRARY_ONLY_FIELDS = ("aliases",)
+_LIBRARY_ONLY_FIELDS = ("aliases", "shear_modulus", "yield_strength", "hel", "caution")
+"""Fields of a library entry that its own (Mie–Grüneisen) model does not take."""
+
+LIBRARY_FIELD = "library"
+"""Specification field naming a library entry that supplies the fields not given."""
 
 
 # --- the library file ----------------------------------------------------------------
@@ -157,8 +180,10 @@ def _resolve(name: str) -> str:
     key = _lookup().get(name.casefold())
     if key is not None:
         return key
-    close = difflib.get_close_matches(name.casefold(), list(_lookup()), n=5, cutoff=0.6)
-    suggestions = list(dict.fromkeys(_lookup()[label] for label in close))
+    folded = name.casefold()
+    starts = [label for label in _lookup() if label.startswith(folded) or folded.startswith(label)]
+    close = difflib.get_close_matches(folded, list(_lookup()), n=5, cutoff=0.6)
+    suggestions = list(dict.fromkeys(_lookup()[label] for label in [*starts, *close]))
     hint = f"; did you mean {', '.join(suggestions)}?" if suggestions else ""
     raise MaterialError(f"unknown material {name!r}{hint} (available: {', '.join(available())})")
 
@@ -170,19 +195,120 @@ def entry(name: str) -> dict[str, Any]:
             for key, value in data.items()}
 
 
-def get(name: str) -> Material:
+def get(name: str, model: str | None = None) -> Material:
     """The library material ``name`` (key or alias, any case); one shared instance per entry.
 
-    Unknown names raise ``MaterialError`` listing close matches and all names.
+    Parameters
+    ----------
+    name : str
+        A library key or alias.
+    model : str, optional
+        ``None`` for the entry's own model (Mie–Grüneisen), or one of
+        ``STRENGTH_MODELS`` to build the entry with its strength data
+        (``strength_spec``).
+
+    Raises
+    ------
+    MaterialError
+        An unknown name (with the close matches and all names), an unknown
+        model, or an entry without strength data for a strength model.
     """
-    return _build(_resolve(name))
+    return _build(_resolve(name), model)
 
 
 @functools.cache
-def _build(key: str) -> Material:
-    spec = {field: value for field, value in _library()[key].items()
-            if field not in _LIBRARY_ONLY_FIELDS}
-    return material_from_spec(key, spec)
+def _build(key: str, model: str | None) -> Material:
+    if model is None:
+        spec = {field: value for field, value in _library()[key].items()
+                if field not in _LIBRARY_ONLY_FIELDS}
+        return material_from_spec(key, spec)
+    return material_from_spec(key, {"model": model, LIBRARY_FIELD: key})
+
+
+def listing() -> str:
+    """The library as a table for ``wavediagram materials``: every entry's data, strength,
+    aliases and source, with its caution (if any) on a line of its own."""
+    lines = [f"{'name':<12} {'rho0 kg/m3':>10} {'c0 m/s':>8} {'s':>6} {'Gamma0':>6} "
+             f"{'spall GPa':>9} {'G GPa':>6} {'Y GPa':>6}  aliases; source"]
+
+    def gpa(value, width):
+        return f"{value / 1e9:{width}.3g}" if value is not None else f"{'-':>{width}}"
+
+    for name in available("mie-gruneisen"):
+        e = _library()[name]
+        try:
+            strength = strength_spec(name, STRENGTH_MODELS[0])["yield_strength"]
+        except MaterialError:  # no strength data, or none usable (see the caution)
+            strength = None
+        aliases = ", ".join(e.get("aliases", ()))
+        lines.append(f"{name:<12} {e['rho0']:>10.0f} {e['c0']:>8.0f} {e['s']:>6.3f} "
+                     f"{e['gamma0']:>6.2f} {gpa(e.get('spall_strength'), 9)} "
+                     f"{gpa(e.get('shear_modulus'), 6)} {gpa(strength, 6)}  "
+                     f"{aliases}; {e.get('source', '')}")
+        if "caution" in e:
+            lines.append(f"{'':<12} ! {e['caution']}")
+    porous = available("porous")
+    if porous:
+        lines.append(f"{'porous':<12} {'rho0 kg/m3':>10} {'alpha0':>8} {'crush GPa':>9}  source")
+        for name in porous:
+            e = _library()[name]
+            lines.append(f"{name:<12} {e['solid_rho0'] / e['alpha0']:>10.0f} "
+                         f"{e['alpha0']:>8.3f} {e.get('crush_stress', 0.0) / 1e9:>9.3f}  "
+                         f"{e.get('source', '')}")
+    for name in available("phase-change"):
+        e = _library()[name]
+        lines.append(f"{name:<12} {e['rho0']:>10.0f}  phase change at "
+                     f"{e['transition_stress'] / 1e9:.4g} GPa; {e.get('source', '')}")
+    lines.append("Names and aliases match without regard to case.  G and Y (yield stress; from "
+                 "the HEL where the entry gives one) let a scene use an entry as "
+                 "model = \"elastic-plastic\" or \"finite-plastic\" (library = \"NAME\").")
+    return "\n".join(lines)
+
+
+def caution(name: str) -> str:
+    """The entry's caution (a trap in its data, e.g. a fit good in a narrow range), or ``""``."""
+    return str(_library()[_resolve(name)].get("caution", ""))
+
+
+def strength_spec(name: str, model: str) -> dict[str, Any]:
+    """The specification of library entry ``name`` as a ``model`` solid (SI floats).
+
+    ``model`` is one of ``STRENGTH_MODELS``.  Elastic–plastic: ``rho0``, Lamé
+    constants ``lambda = K - 2G/3`` and ``mu = G`` (``K = rho0 c0^2``),
+    ``yield_strength``; finite-plastic: the Mie–Grüneisen fields, ``shear_modulus``
+    and ``yield_strength``.  ``spall_strength`` is carried when the entry has one.
+    Raises ``MaterialError`` if the entry has no shear modulus or yield strength.
+    """
+    key = _resolve(name)
+    data = _library()[key]
+    if model not in STRENGTH_MODELS:
+        raise MaterialError(f"{key}: a library entry can be built as model "
+                            f"{' or '.join(STRENGTH_MODELS)} (or its own); got {model!r}")
+    if "shear_modulus" not in data or not ("yield_strength" in data or "hel" in data):
+        with_strength = [k for k, d in _library().items() if "shear_modulus" in d]
+        raise MaterialError(f"{key}: the library gives no shear_modulus and yield_strength "
+                            f"for it (entries with strength: {', '.join(with_strength)})")
+    bulk = data["rho0"] * data["c0"] ** 2
+    shear = data["shear_modulus"]
+    poisson = (3.0 * bulk - 2.0 * shear) / (2.0 * (3.0 * bulk + shear))
+    if not 0.0 < poisson < 0.5:
+        raise MaterialError(f"{key}: rho0*c0^2 = {bulk / 1e9:.3g} GPa with shear_modulus "
+                            f"{shear / 1e9:.3g} GPa gives Poisson's ratio {poisson:.2f}, outside "
+                            f"(0, 0.5): its c0 is a fitting intercept, not a bulk sound speed, "
+                            f"so it has no strength model ({caution(key) or 'see its entry'})")
+    yield_strength = data.get("yield_strength")
+    if yield_strength is None:
+        yield_strength = data["hel"] * 2.0 * shear / (bulk + 4.0 * shear / 3.0)
+    spec: dict[str, Any] = {"model": model, "rho0": data["rho0"],
+                            "yield_strength": yield_strength}
+    if model == "elastic-plastic":
+        spec |= {"lambda": bulk - 2.0 * shear / 3.0, "mu": shear}
+    else:
+        spec |= {field: data[field] for field in ("c0", "s", "gamma0")}
+        spec["shear_modulus"] = shear
+    if "spall_strength" in data:
+        spec["spall_strength"] = data["spall_strength"]
+    return spec
 
 
 # --- specifications -------------------------------------------------------------------
@@ -195,6 +321,8 @@ def material_from_spec(name: str, spec: dict[str, Any]) -> Material:
     """
     if not isinstance(spec, dict):
         raise MaterialError(f"{name}: a material specification must be a table, got {spec!r}")
+    if LIBRARY_FIELD in spec:
+        spec = _with_library(name, spec)
     model = spec.get("model")
     if not isinstance(model, str) or model not in MODELS:
         got = "no model" if model is None else f"model {model!r}"
@@ -221,8 +349,8 @@ def material_from_spec(name: str, spec: dict[str, Any]) -> Material:
     if model == "linear-elastic":
         return _linear_elastic(name, values)
     if model == "elastic-plastic":
-        return ElasticPlastic(name, values["rho0"], values["lambda"], values["mu"],
-                              values["yield_strength"],
+        lam, mu = _lame(name, values, _ELASTIC_PLASTIC_CHOICES, "an elastic-plastic")
+        return ElasticPlastic(name, values["rho0"], lam, mu, values["yield_strength"],
                               spall_strength=values.get("spall_strength", math.inf))
     if model == "finite-plastic":
         return _finite_plastic(name, values)
@@ -234,6 +362,55 @@ def material_from_spec(name: str, spec: dict[str, Any]) -> Material:
                                 values["transition_strain"],
                                 spall_strength=values.get("spall_strength", math.inf))
     return IdealGas(name, values["gamma"], values["rho0"], cv=values.get("cv"))
+
+
+def _with_library(name: str, spec: dict[str, Any]) -> dict[str, Any]:
+    """``spec`` completed from the library entry its ``library`` field names.
+
+    Fields the specification gives win; the entry supplies the rest, built as the
+    specification's model (``strength_spec``; for other models, the entry's own
+    fields).  Only ``model`` and the fields of one elastic choice are taken, so a
+    specification giving ``poisson`` is not contradicted by the entry's ``mu``.
+    """
+    source = spec[LIBRARY_FIELD]
+    model = spec.get("model")
+    if not isinstance(source, str):
+        raise MaterialError(f"{name}: {LIBRARY_FIELD} must be a library name, got {source!r}")
+    try:
+        base = (strength_spec(source, model) if model in STRENGTH_MODELS else
+                {k: v for k, v in entry(source).items()
+                 if k not in (*_LIBRARY_ONLY_FIELDS, *TEXT_FIELDS, "up_max")})
+    except MaterialError as exc:
+        if name == source:  # a library entry built as a strength model: already named
+            raise
+        raise MaterialError(f"{name}: {LIBRARY_FIELD} = {source!r}: {exc}") from exc
+    given = {k: v for k, v in spec.items() if k != LIBRARY_FIELD}
+    if any(k in given for k in ("poisson", "E", "shear_modulus", "lambda", "mu")):
+        for k in ("poisson", "E", "shear_modulus", "lambda", "mu"):
+            base.pop(k, None)
+    return base | given
+
+
+def _lame(name: str, values: dict[str, float], choices, what: str) -> tuple[float, float]:
+    """Lamé constants ``(lambda, mu)`` (Pa) from exactly one of ``choices`` of elastic constants."""
+    given = [choice for choice in choices if all(field in values for field in choice)]
+    present = sorted({f for choice in choices for f in choice if f in values})
+    used = {f for choice in given for f in choice}
+    if len(given) != 1 or set(present) != used:
+        options = " or ".join(" and ".join(choice) for choice in choices)
+        raise MaterialError(f"{name}: {what} material needs exactly one of: {options}; "
+                            f"got {', '.join(present) or 'none of them'}")
+    choice = given[0]
+    if choice == ("lambda", "mu"):
+        return values["lambda"], values["mu"]
+    nu = values["poisson"]
+    if not -1.0 < nu < 0.5:
+        raise MaterialError(f"{name}: poisson must be in (-1, 0.5), got {nu!r}")
+    if choice == ("E", "poisson"):
+        youngs = require_positive("E", values["E"], name)
+        return youngs * nu / ((1.0 + nu) * (1.0 - 2.0 * nu)), youngs / (2.0 * (1.0 + nu))
+    shear = require_positive("shear_modulus", values["shear_modulus"], name)
+    return 2.0 * shear * nu / (1.0 - 2.0 * nu), shear
 
 
 def _finite_plastic(name: str, values: dict[str, float]) -> FinitePlastic:
@@ -281,12 +458,5 @@ def _linear_elastic(name: str, values: dict[str, float]) -> LinearElastic:
     strength = values.get("spall_strength", math.inf)
     if "C" in values:
         return LinearElastic(name, values["rho0"], values["C"], strength)
-    if "lambda" in values:
-        return LinearElastic.from_lame(name, values["rho0"], values["lambda"], values["mu"],
-                                       strength)
-    youngs, nu = require_positive("E", values["E"], name), values["poisson"]
-    if not -1.0 < nu < 0.5:
-        raise MaterialError(f"{name}: poisson must be in (-1, 0.5), got {nu!r}")
-    lam = youngs * nu / ((1.0 + nu) * (1.0 - 2.0 * nu))
-    return LinearElastic.from_lame(name, values["rho0"], lam, youngs / (2.0 * (1.0 + nu)),
-                                   strength)
+    lam, mu = _lame(name, values, _LINEAR_ELASTIC_CHOICES[1:], "a linear-elastic")
+    return LinearElastic.from_lame(name, values["rho0"], lam, mu, strength)

@@ -55,7 +55,7 @@ def test_run_writes_the_solution_document(tmp_path):
     # the rear free surface jumps at the shock's arrival and stays unstressed
     assert all(s == 0.0 for s in rear["sigma"])
     assert max(rear["u"]) > 0.0
-    assert all(isinstance(s["X"], float) and isinstance(s["t"], float) for s in doc["spall"])
+    assert all(isinstance(s["x"], float) and isinstance(s["t"], float) for s in doc["spall"])
 
 
 def test_run_writes_probe_csvs(tmp_path):

@@ -16,7 +16,7 @@ from materials import (
     Shock,
     solve_boundary,
 )
-from materials.library import available, entry, get, material_from_spec
+from materials.library import available, caution, entry, get, listing, material_from_spec
 
 MG_FIELDS = ("rho0", "c0", "s", "gamma0", "cv", "up_max")
 
@@ -207,3 +207,62 @@ def test_no_import_cycle():
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                          check=True, cwd=Path(__file__).resolve().parents[1])
     assert out.stdout.strip() == "27"
+
+
+# --- strength, aliases, cautions ----------------------------------------------------
+STRENGTH = ("Al2024", "Al6061", "Cu", "W", "Ta", "SS304", "Ti6Al4V", "LiF", "sapphire")
+
+
+@pytest.mark.parametrize("name", STRENGTH)
+def test_strength_entries_build_as_elastic_plastic_and_finite_plastic(name):
+    data = entry(name)
+    ep = get(name, model="elastic-plastic")
+    assert ep.mu == data["shear_modulus"]
+    bulk = data["rho0"] * data["c0"] ** 2
+    assert ep.lam + 2.0 * ep.mu / 3.0 == pytest.approx(bulk, rel=1e-12)
+    hel = (ep.lam + 2.0 * ep.mu) * ep.yield_strength / (2.0 * ep.mu)
+    if "hel" in data:
+        assert hel == pytest.approx(data["hel"], rel=1e-12)
+    else:
+        assert ep.yield_strength == data["yield_strength"]
+    fp = get(name, model="finite-plastic")
+    assert fp.shear_modulus == data["shear_modulus"]
+    assert "strength" in data["source"]
+
+
+def test_library_field_fills_a_specification():
+    built = material_from_spec("CuEP", {"model": "elastic-plastic", "library": "copper",
+                                        "yield_strength": 0.3e9})
+    assert built.yield_strength == 0.3e9 and built.mu == entry("Cu")["shear_modulus"]
+    nu = 0.34
+    by_poisson = material_from_spec("CuP", {"model": "elastic-plastic", "rho0": 8930.0,
+                                            "shear_modulus": 47.7e9, "poisson": nu,
+                                            "yield_strength": 0.12e9})
+    assert by_poisson.lam == pytest.approx(2.0 * 47.7e9 * nu / (1.0 - 2.0 * nu), rel=1e-12)
+    with pytest.raises(MaterialError, match="exactly one of"):
+        material_from_spec("X", {"model": "elastic-plastic", "rho0": 8930.0, "mu": 1e9,
+                                 "lambda": 1e9, "poisson": 0.3, "yield_strength": 1e8})
+
+
+def test_entries_without_usable_strength_are_refused_with_a_reason():
+    with pytest.raises(MaterialError, match="no shear_modulus"):
+        get("PMMA", model="elastic-plastic")
+    with pytest.raises(MaterialError, match="fitting intercept"):
+        get("fused_silica", model="elastic-plastic")
+
+
+def test_aliases_are_consistent_and_misses_suggest():
+    assert get("Al") is get("aluminum") is get("aluminium") is get("Al6061")
+    assert get("copper") is get("Cu")
+    with pytest.raises(MaterialError, match="did you mean Ti6Al4V"):
+        get("Ti")
+    with pytest.raises(MaterialError, match="Al2024"):
+        get("alu")
+
+
+def test_listing_shows_strength_and_cautions():
+    text = listing()
+    assert "fitting intercept" in caution("fused_silica")
+    assert "! " + caution("fused_silica") in text
+    cu = next(line for line in text.splitlines() if line.startswith("Cu "))
+    assert "47.7" in cu and "0.12" in cu and "copper" in cu

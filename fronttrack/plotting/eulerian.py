@@ -37,11 +37,12 @@ class AffineMotion:
     u: float
 
     def __call__(self, x, t):
-        return self.a + self.b * np.asarray(x) + self.u * np.asarray(t)
+        """Eulerian position (m) of ``X`` (m) at ``t`` (s): floats or numpy arrays."""
+        return self.a + self.b * x + self.u * t
 
 
 def _centroid_x(polygon) -> float:
-    return float(np.mean([p[0] for p in polygon]))
+    return sum(p[0] for p in polygon) / len(polygon)
 
 
 def _bottom_width(polygon) -> float:
@@ -101,14 +102,13 @@ def _born_motion(region, owners, motions, site_x, centres) -> AffineMotion | Non
     return AffineMotion(a, stretch, region.state.u)
 
 
-def front_path(front, motions: dict[int, AffineMotion]) -> tuple[np.ndarray, np.ndarray] | None:
-    """Eulerian ``(x, t)`` end points (m, s) of a wave front's straight Eulerian path."""
+def front_path(front, motions: dict[int, AffineMotion]) -> tuple[tuple, tuple] | None:
+    """Eulerian ``((x0, x1), (t0, t1))`` end points (m, s) of a wave front's straight path."""
     region = front.left_region if front.left_region in motions else front.right_region_id
     if region not in motions or front.t1 is None:
         return None
-    x_lagrange = np.array([front.x0, front.x1])
-    t = np.array([front.t0, front.t1])
-    return motions[region](x_lagrange, t), t
+    motion = motions[region]
+    return ((motion(front.x0, front.t0), motion(front.x1, front.t1)), (front.t0, front.t1))
 
 
 def site_edges(solution, motions) -> list[tuple[float, str, np.ndarray, np.ndarray]]:
@@ -137,6 +137,4 @@ def site_edges(solution, motions) -> list[tuple[float, str, np.ndarray, np.ndarr
 
 def eulerian_polygon(region, motion: AffineMotion) -> list[tuple[float, float]]:
     """The region's polygon mapped to Eulerian ``(x, t)`` (m, s)."""
-    polygon = np.array(region.polygon())
-    return list(zip(motion(polygon[:, 0], polygon[:, 1]).tolist(), polygon[:, 1].tolist(),
-                    strict=True))
+    return [(motion(x, t), t) for x, t in region.vertices]

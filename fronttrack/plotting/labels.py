@@ -1,23 +1,17 @@
 """Where to write each region's number on an X–t diagram.
 
-A number goes at the pole of inaccessibility of its region (shapely's
-``polylabel``): the interior point farthest from the region's boundary.  The
-search runs in printer's points, i.e. after scaling X and t by the size the
-axes will have on paper, so that "far from the boundary" means far on the page
-whatever the aspect ratio of mm to µs.  A number is written only if the circle
-of that radius holds the whole text (its estimated half-diagonal plus a margin):
-the number then lies inside its region and crosses no front.
+Which regions are numbered, and their numbers, is decided once for a solution
+(``fronttrack.numbering``); this module finds where each number goes.  A number
+goes at the pole of inaccessibility of its region (shapely's ``polylabel``): the
+interior point farthest from the region's boundary.  The search runs in printer's
+points, i.e. after scaling X and t by the size the axes have on paper, so that
+"far from the boundary" means far on the page whatever the aspect ratio of mm to
+µs.  The parts of a region under other annotations (``obstacles``: layer names,
+spall and boundary marks) are avoided when the rest still holds the number;
+otherwise the number goes at the pole of the whole region if that holds it, and
+at the pole of the part left free by the annotations if nothing does.
 
-Skipped, by design:
-
-- fan-interior regions (given by the caller, see ``plotting.fans``): the
-  wedges between the rays of a discretised fan and the cells of fan–fan
-  interaction;
-- regions too small on the page to hold their number legibly (this includes
-  the slivers left between nearly coincident fronts);
-- the parts of a region covered by ``obstacles`` (other annotations, in points).
-
-Every region is labelled at most once, at a point inside its own polygon.
+Every numbered region is labelled exactly once, at a point inside its own polygon.
 """
 
 from __future__ import annotations
@@ -25,21 +19,10 @@ from __future__ import annotations
 from collections.abc import Callable, Iterable
 
 from shapely import make_valid
-from shapely.geometry import MultiPolygon, Point, Polygon, box
+from shapely.geometry import MultiPolygon, Polygon, box
 from shapely.ops import polylabel
 
-CHAR_WIDTH = 0.62
-"""Width of a digit as a fraction of the font size (DejaVu Sans digits are 0.636 em)."""
-
-MARGIN = 1.5
-"""Clearance (pt) kept between a number and the nearest front."""
-
-
-def label_radius(text: str, fontsize: float) -> float:
-    """Radius (pt) of the circle that holds ``text`` written at ``fontsize`` (pt), plus margin."""
-    half_width = 0.5 * CHAR_WIDTH * fontsize * len(text)
-    half_height = 0.5 * 0.75 * fontsize
-    return (half_width**2 + half_height**2) ** 0.5 + MARGIN
+from ..numbering import label_radius
 
 
 class PageScale:
@@ -50,6 +33,7 @@ class PageScale:
     """
 
     def __init__(self, xlim, ylim, size):
+        self.size = (float(size[0]), float(size[1]))
         self.x0, self.y0 = xlim[0], ylim[0]
         self.sx = size[0] / (xlim[1] - xlim[0])
         self.sy = size[1] / (ylim[1] - ylim[0])
@@ -83,38 +67,40 @@ def _largest_part(geometry):
     return max(parts, key=lambda p: p.area) if parts else None
 
 
+def _pole(shape, radius: float):
+    """The pole of ``shape`` if a circle of ``radius`` about it fits inside, else ``None``."""
+    shape = _largest_part(shape)
+    if shape is None:
+        return None
+    pole = polylabel(shape, tolerance=0.25)
+    if not shape.contains(pole) or shape.boundary.distance(pole) < radius:
+        return None
+    return pole
+
+
 def place_labels(regions: Iterable, polygon_of: Callable, scale: PageScale,
-                 fontsize: float, obstacles=None, skip=frozenset()) -> dict[int, tuple]:
-    """Label positions in data units, by region id, for the regions that can hold one.
+                 numbers: dict[int, int], fontsize: float, obstacles=None) -> dict[int, tuple]:
+    """Label positions in data units, by region id, for every numbered region shown.
 
     ``polygon_of(region)`` returns the region's vertices in data units (mm, µs),
-    ``obstacles`` an optional shapely geometry (in points) to keep clear, and
-    ``skip`` the ids of regions never to label (fan interiors).
+    ``numbers`` the region numbers (``fronttrack.numbering.region_numbers``) and
+    ``obstacles`` an optional shapely geometry (in points) to keep clear.
     """
     placed: dict[int, tuple[float, float]] = {}
     for region in regions:
-        if region.id in skip:
+        if region.id not in numbers:
             continue
-        radius = label_radius(str(region.id), fontsize)
         vertices = scale.to_page(polygon_of(region))
         if len(vertices) < 3:
             continue
-        xs = [p[0] for p in vertices]
-        ys = [p[1] for p in vertices]
-        if max(xs) - min(xs) < 2 * radius or max(ys) - min(ys) < 2 * radius:
-            continue
+        radius = label_radius(str(numbers[region.id]), fontsize)
         shape = Polygon(vertices)
         if not shape.is_valid:
             shape = make_valid(shape)
-        if obstacles is not None:
-            shape = shape.difference(obstacles)
-        shape = _largest_part(shape)
-        if shape is None or shape.area < (2 * radius) ** 2:
-            continue
-        pole = polylabel(shape, tolerance=0.25)
-        if not shape.contains(pole) or shape.exterior.distance(pole) < radius:
-            continue
-        if any(Point(pole).distance(hole) < radius for hole in shape.interiors):
-            continue
+        free = _largest_part(shape.difference(obstacles)) if obstacles is not None else None
+        pole = (_pole(free, radius) if free is not None else None) or _pole(shape, radius)
+        if pole is None:  # too tight for full clearance: still keep off the annotations
+            pole = polylabel(free if free is not None else _largest_part(shape),
+                             tolerance=0.25)
         placed[region.id] = scale.to_data(pole.x, pole.y)
     return placed

@@ -24,10 +24,28 @@ from __future__ import annotations
 import matplotlib.pyplot as plt
 import numpy as np
 
-from .attenuation import peak_stress
+from .attenuation import peak_stress_steps
 from .style import GPA, MM, SIGMA_LABEL, T_LABEL, U_LABEL, US, X_LABEL, title_of
 
 QUANTITIES = {"sigma": (SIGMA_LABEL, GPA), "u": (U_LABEL, 1.0)}
+
+
+def _step_line(edges: np.ndarray, values: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The vertices of a step curve (``values[k]`` from ``edges[k]`` to ``edges[k + 1]``),
+    with runs of equal values joined: a lattice gives tens of thousands of edges."""
+    change = np.concatenate([[True], values[1:] != values[:-1]])
+    starts = np.nonzero(change)[0]
+    left, right = edges[starts], edges[np.append(starts[1:], len(values))]
+    return (np.column_stack([left, right]).ravel(),
+            np.repeat(values[starts], 2))
+
+
+def _resolution_note(solution) -> str:
+    """What the steps of the attenuation curve resolve."""
+    if not solution.stats.get("rays"):
+        return "exact: steps where fronts meet (no fans in this solution)"
+    return (f"exact between fronts; steps in fans are rays "
+            f"({solution.scene.accuracy.rays_per_fan} rays in the strongest fan)")
 
 
 def _mark_interfaces(ax, solution) -> None:
@@ -184,18 +202,25 @@ def _annotate_pullback(ax, solution, side, edges, values, peak, low, rebound) ->
                 arrowprops={"arrowstyle": "-", "color": "#8b0000", "lw": 0.6})
 
 
-def plot_peak_stress(solution, ax=None, n=200):
+def plot_peak_stress(solution, ax=None):
     """Peak compressive stress (GPa) vs X (mm) over the whole run: the attenuation curve.
 
-    The largest tension at each X is drawn dashed when there is any.
+    Drawn exactly, as steps between the X where fronts begin and end
+    (``attenuation.peak_stress_steps``): no sampling, so the curve keeps its value
+    up to a free surface.  Where a fan overtakes a shock each ray is a step; the
+    note on the figure says how many rays the strongest fan had.  The largest
+    tension at each X is drawn dashed when there is any.
     """
     if ax is None:
         _, ax = plt.subplots(figsize=(7.0, 4.4))
-    x, top, bottom = peak_stress(solution, n)
-    ax.plot(x * MM, top * GPA, color="#c0392b", lw=1.6, label="peak compression")
+    edges, top, bottom = peak_stress_steps(solution)
+    ax.plot(*_step_line(edges * MM, top * GPA), color="#c0392b", lw=1.6,
+            label="peak compression")
     if np.any(bottom < 0.0):
-        ax.plot(x * MM, bottom * GPA, color="#1f4e9c", lw=1.2, ls="--",
-                label="peak tension")
+        ax.plot(*_step_line(edges * MM, np.minimum(bottom, 0.0) * GPA), color="#1f4e9c",
+                lw=1.2, ls="--", label="peak tension")
+    ax.text(0.01, 0.02, _resolution_note(solution), transform=ax.transAxes, fontsize=7,
+            color="#444444", ha="left", va="bottom")
     _mark_interfaces(ax, solution)
     ax.axhline(0.0, color="#999999", lw=0.6, zorder=0)
     ax.set_xlim(0.0, solution.scene.length * MM)

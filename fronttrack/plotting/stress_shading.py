@@ -1,10 +1,13 @@
-"""Regions filled by stress: a diverging colormap centred at zero, with a colorbar in GPa.
+"""Regions filled by stress on one linear colour scale centred at zero, with a colour bar.
 
-Red is compression, blue tension (stress positive in compression).  Each half
-of the scale spans its own extreme (``TwoSlopeNorm``), so a tension of a few
-per cent of the peak compression still shows; when nothing is in tension the
-colorbar shows its compressive half only.  The colours are blended with white
-so that lines and numbers stay readable on them.
+Red is compression, blue tension (stress positive in compression).  The scale is
+linear and symmetric, ``-m … +m`` GPa with ``m`` the largest stress magnitude of
+the solution, so equal colour steps are equal stress steps on both sides of zero
+and a tension of a few per cent of the peak compression looks as weak as it is.
+The colour bar shows only the range the solution reaches (its lowest stress to
+its highest), with equally spaced ticks; when nothing is in tension beyond the
+negligible stress it starts at zero.  The colours are blended with white so that
+lines and numbers stay readable on them.
 """
 
 from __future__ import annotations
@@ -12,7 +15,7 @@ from __future__ import annotations
 import matplotlib.pyplot as plt
 import numpy as np
 from matplotlib.collections import PolyCollection
-from matplotlib.colors import ListedColormap, TwoSlopeNorm
+from matplotlib.colors import ListedColormap, Normalize
 from matplotlib.ticker import FormatStrFormatter, MaxNLocator
 
 from .style import GPA, STRESS_CMAP
@@ -20,22 +23,31 @@ from .style import GPA, STRESS_CMAP
 SHADE_STRENGTH = 0.5
 """Fraction of the colormap colour in a region's fill (the rest is white)."""
 
+COLORBAR_LABEL = "stress σ (GPa), compression > 0; linear scale, white = 0"
 
-def stress_norm(solution) -> TwoSlopeNorm:
-    """Colour scale (GPa) centred at zero, each half spanning its own extreme."""
+
+def stress_range(solution) -> tuple[float, float]:
+    """Lowest and highest stress (GPa) the colour bar shows.
+
+    The lowest is zero when no region is in tension beyond the negligible stress.
+    """
     sigma = np.array([r.state.sigma for r in solution.regions]) * GPA
-    top = max(float(sigma.max()), 1e-12)
-    bottom = min(float(sigma.min()), -0.05 * top)
-    return TwoSlopeNorm(vmin=bottom, vcenter=0.0, vmax=max(top, 0.05 * -bottom))
+    negligible = solution.accuracy_report.get("negligible_stress", 0.0) * GPA
+    low = float(sigma.min()) if sigma.min() < -negligible else 0.0
+    return low, max(float(sigma.max()), low + 1e-12, 0.0)
 
 
-def stress_ticks(norm) -> list[float]:
-    """Colorbar ticks (GPa): a few on each side of zero, inside the colour range."""
-    ticks = {0.0}
-    for low, high, count in ((norm.vmin, 0.0, 3), (0.0, norm.vmax, 6)):
-        values = MaxNLocator(count).tick_values(low, high)
-        ticks.update(float(v) for v in values if low <= v <= high)
-    return sorted(ticks)
+def stress_norm(solution) -> Normalize:
+    """One linear colour scale (GPa), symmetric about zero: ``-m … +m``."""
+    low, high = stress_range(solution)
+    top = max(abs(low), abs(high), 1e-12)
+    return Normalize(vmin=-top, vmax=top)
+
+
+def stress_ticks(low: float, high: float) -> list[float]:
+    """Equally spaced colour-bar ticks (GPa) from ``low`` to ``high``, zero among them."""
+    return [float(v) for v in MaxNLocator(7, steps=(1, 2, 2.5, 5, 10)).tick_values(low, high)
+            if low - 1e-9 * (high - low) <= v <= high + 1e-9 * (high - low)]
 
 
 def light_cmap(name: str = STRESS_CMAP, strength: float = SHADE_STRENGTH) -> ListedColormap:
@@ -45,20 +57,34 @@ def light_cmap(name: str = STRESS_CMAP, strength: float = SHADE_STRENGTH) -> Lis
     return ListedColormap(colors, name=f"{name}_light")
 
 
-def shade_regions(ax, solution, polygons: dict) -> None:
-    """Fill each region's polygon (``polygons[id]``, data units) by its stress; add a colorbar."""
+def _polygon_arrays(polygons: list) -> list[np.ndarray]:
+    """The polygons grouped into arrays of equal vertex counts (matplotlib's fast path)."""
+    by_count: dict[int, list] = {}
+    for index, polygon in enumerate(polygons):
+        by_count.setdefault(len(polygon), []).append(index)
+    return [(np.array(indices), np.array([polygons[i] for i in indices], dtype=float))
+            for indices in by_count.values()]
+
+
+def shade_regions(ax, solution, polygons: dict):
+    """Fill each region's polygon (``polygons[id]``, data units) by its stress.
+
+    Adds the colour bar and returns it (``matplotlib.colorbar.Colorbar``).
+    """
     norm = stress_norm(solution)
-    ids = [r.id for r in solution.regions if r.id in polygons]
-    sigma = {r.id: r.state.sigma * GPA for r in solution.regions}
-    collection = PolyCollection([polygons[i] for i in ids], cmap=light_cmap(), norm=norm,
-                                edgecolors="face", linewidths=0.2, zorder=0)
-    collection.set_array(np.array([sigma[i] for i in ids]))
-    ax.add_collection(collection)
+    cmap = light_cmap()
+    shown = [r for r in solution.regions if r.id in polygons]
+    sigma = np.array([r.state.sigma for r in shown]) * GPA
+    collection = None
+    for indices, vertices in _polygon_arrays([polygons[r.id] for r in shown]):
+        collection = PolyCollection(vertices, cmap=cmap, norm=norm, edgecolors="face",
+                                    linewidths=0.2, zorder=0)
+        collection.set_array(sigma[indices])
+        ax.add_collection(collection, autolim=False)
     bar = ax.figure.colorbar(collection, ax=ax, pad=0.02, fraction=0.05)
-    bar.set_label("stress σ (GPa), compression > 0")
-    bar.set_ticks(stress_ticks(norm))
+    bar.set_label(COLORBAR_LABEL, fontsize=8)
+    low, high = stress_range(solution)
+    bar.ax.set_ylim(low, high)
+    bar.set_ticks(stress_ticks(low, high))
     bar.ax.yaxis.set_major_formatter(FormatStrFormatter("%g"))
-    negligible = solution.accuracy_report.get("negligible_stress", 0.0) * GPA
-    if min(sigma.values()) >= -negligible:
-        # no tension beyond the negligible stress (rounding): the compressive half only
-        bar.ax.set_ylim(0.0, norm.vmax)
+    return bar

@@ -51,8 +51,9 @@ class WavePath(StateSeries):
     states: tuple[State, ...]
 
 
-def _waves(solution):
-    """``(kind, direction, ahead_id, behind_id)`` of every shock and fan, deduplicated."""
+def _waves(solution, keep):
+    """``(kind, direction, ahead_id, behind_id)`` of every shock and fan whose two end
+    regions pass ``keep(ahead, behind)``, deduplicated."""
     seen, waves = set(), []
     for front in solution.fronts:
         if front.kind == "shock" and front.t1 is not None:
@@ -68,15 +69,19 @@ def _waves(solution):
         waves.append(("fan", head.direction, ahead, behind))
     unique = []
     for wave in waves:
-        if None in wave or wave in seen:
+        if None in wave or wave in seen or not keep(wave[2], wave[3]):
             continue
         seen.add(wave)
         unique.append(wave)
     return unique
 
 
-def wave_paths(solution) -> list[WavePath]:
-    """Sampled state-space paths of every wave of the solution (see module docstring)."""
+def wave_paths(solution, numbered=None) -> list[WavePath]:
+    """Sampled state-space paths of the waves of the solution (see module docstring).
+
+    ``numbered``: if given, a set of region ids; only the waves joining two of
+    them are sampled (the paths a σ–u diagram draws by default).
+    """
     regions = {r.id: r for r in solution.regions}
     release = solution.accuracy_report.get("release", "isentrope")
     sigma = [r.state.sigma for r in solution.regions]
@@ -86,7 +91,10 @@ def wave_paths(solution) -> list[WavePath]:
     resolution = (scale / RESOLUTION, max(max(u) - min(u), 1e-3) / RESOLUTION,
                   max(max(v) - min(v), 1e-12) / RESOLUTION)
     paths, seen = [], set()
-    for kind, direction, ahead_id, behind_id in _waves(solution):
+    def keep(ahead, behind):
+        return numbered is None or (ahead in numbered and behind in numbered)
+
+    for kind, direction, ahead_id, behind_id in _waves(solution, keep):
         ahead, behind = regions[ahead_id], regions[behind_id]
         a, b = ahead.state, behind.state
         key = (ahead.material.name, kind, *_rounded(a, resolution), *_rounded(b, resolution))

@@ -8,7 +8,8 @@ Two views of one solution:
   are piecewise-linear particle paths, and an open gap shows its two faces with
   the void between them.
 
-A view lists region polygons, wave segments, site segments (with the site's
+A view lists region polygons, wave segments (as arrays: a lattice holds a hundred
+thousand rays), site segments (with the site's
 kind at that time), gap voids, spall points and the layer spans at ``t = 0``;
 ``plotting.xt`` draws them.
 """
@@ -20,7 +21,49 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from . import eulerian, sites
+from .fans import is_edge_ray
 from .style import MM, US
+
+WAVE_KINDS = ("shock", "release", "ray", "edge")
+"""Kinds of drawn wave segment: compressive shock, rarefaction shock, fan ray, and
+the head or tail ray of a fan (``plotting.fans.is_edge_ray``)."""
+
+
+@dataclass(frozen=True)
+class WaveSegments:
+    """Straight wave segments of a view: end points ``x``, ``t`` (n × 2, mm and µs),
+    ``kind`` (one of ``WAVE_KINDS``) and the stress ``jump`` (Pa) of each."""
+
+    x: np.ndarray
+    t: np.ndarray
+    kind: np.ndarray
+    jump: np.ndarray
+
+    @classmethod
+    def of(cls, fronts, ends) -> WaveSegments:
+        """Segments of the wave ``fronts`` whose ``ends(front)`` (``((x0, x1), (t0, t1))``
+        in mm and µs) is not ``None``."""
+        xs, ts, kinds, jumps = [], [], [], []
+        for front in fronts:
+            if front.kind not in ("shock", "ray") or front.t1 is None:
+                continue
+            end = ends(front)
+            if end is None:
+                continue
+            xs.append(end[0])
+            ts.append(end[1])
+            if front.kind == "shock":
+                kinds.append("shock" if front.jump >= 0.0 else "release")
+            else:
+                kinds.append("edge" if is_edge_ray(front) else "ray")
+            jumps.append(front.jump)
+        return cls(np.array(xs, dtype=float).reshape(-1, 2),
+                   np.array(ts, dtype=float).reshape(-1, 2), np.array(kinds, dtype=str),
+                   np.array(jumps, dtype=float))
+
+    def kinds(self) -> set[str]:
+        """The kinds present."""
+        return set(self.kind.tolist())
 
 
 @dataclass(frozen=True)
@@ -46,7 +89,7 @@ class XtView:
 
     eulerian: bool
     polygons: dict[int, list[tuple[float, float]]]
-    waves: list[tuple[object, tuple[float, float], tuple[float, float]]]
+    waves: WaveSegments
     site_segments: list[SiteSegment]
     voids: list[tuple[np.ndarray, np.ndarray, np.ndarray]] = field(default_factory=list)
     spalls: list[tuple[float, float]] = field(default_factory=list)
@@ -68,9 +111,9 @@ def _layer_spans(scene, positions) -> list[tuple[float, float, object]]:
 
 def lagrangian_view(solution) -> XtView:
     """The Lagrangian X–t geometry (mm, µs)."""
-    polygons = {r.id: [(x * MM, t * US) for x, t in r.polygon()] for r in solution.regions}
-    waves = [(f, (f.x0 * MM, f.x1 * MM), (f.t0 * US, f.t1 * US)) for f in solution.fronts
-             if f.kind in ("shock", "ray") and f.t1 is not None]
+    polygons = {r.id: [(x * MM, t * US) for x, t in r.vertices] for r in solution.regions}
+    waves = WaveSegments.of(solution.fronts, lambda f: ((f.x0 * MM, f.x1 * MM),
+                                                         (f.t0 * US, f.t1 * US)))
     segments = []
     for front in sites.sites(solution):
         condition = sites.boundary_kind(solution, front) if front.kind == "boundary" else ""
@@ -89,22 +132,20 @@ def eulerian_view(solution) -> XtView:
     polygons = {}
     for region in solution.regions:
         if region.id in motions:
-            polygon = eulerian.eulerian_polygon(region, motions[region.id])
-            polygons[region.id] = [(x * MM, t * US) for x, t in polygon]
-    waves = []
-    for front in solution.fronts:
-        if front.kind in ("shock", "ray"):
-            path = eulerian.front_path(front, motions)
-            if path is not None:
-                x, t = path
-                waves.append((front, tuple(x * MM), tuple(t * US)))
-    segments, faces = _eulerian_sites(solution, motions)
-    spalls = []
-    for s in solution.spalls:
-        region = solution.region_at(s.x, s.t)
-        if region.id in motions:
-            spalls.append((float(motions[region.id](s.x, s.t)) * MM, s.t * US))
+            polygons[region.id] = [(x * MM, t * US) for x, t in
+                                   eulerian.eulerian_polygon(region, motions[region.id])]
 
+    def ends(front):
+        path = eulerian.front_path(front, motions)
+        return None if path is None else ((path[0][0] * MM, path[0][1] * MM),
+                                          (path[1][0] * US, path[1][1] * US))
+
+    waves = WaveSegments.of(solution.fronts, ends)
+    segments, faces = _eulerian_sites(solution, motions)
+    spalls = [(float(motions[rid](s.x, s.t)) * MM, s.t * US)
+              for s, rid in zip(solution.spalls, _regions_at_points(
+                  solution, motions, [(s.x, s.t) for s in solution.spalls]), strict=True)
+              if rid is not None]
     def initial_position(x):
         return solution.initial_eulerian(x) * MM
 
@@ -112,6 +153,19 @@ def eulerian_view(solution) -> XtView:
                   voids=_voids(faces), spalls=spalls,
                   layers=_layer_spans(solution.scene, initial_position),
                   t_end=solution.scene.t_end * US)
+
+
+def _regions_at_points(solution, motions, points) -> list[int | None]:
+    """For each point (m, s), a region with a motion that has it as a vertex (``None`` if
+    none): the spall points are event points, so vertices of the regions around them."""
+    wanted = set(points)
+    found: dict[tuple[float, float], int] = {}
+    for region in solution.regions:
+        if region.id in motions:
+            for vertex in region.vertices:
+                if vertex in wanted and vertex not in found:
+                    found[vertex] = region.id
+    return [found.get(point) for point in points]
 
 
 def _eulerian_sites(solution, motions):

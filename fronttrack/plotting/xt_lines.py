@@ -5,7 +5,6 @@ from __future__ import annotations
 import numpy as np
 from matplotlib.collections import LineCollection
 
-from .fans import is_edge_ray
 from .labels import PageScale
 from .xt_style import (
     CONTACT,
@@ -21,29 +20,32 @@ from .xt_style import (
 )
 
 
+def _polyline(x: np.ndarray, t: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Segments (n × 2 end points) as one NaN-separated polyline: one path to draw,
+    where a collection of a hundred thousand rays costs a path object each."""
+    gap = np.full((len(x), 1), np.nan)
+    return np.hstack([x, gap]).ravel(), np.hstack([t, gap]).ravel()
+
+
 def draw_waves(ax, solution, view) -> None:
-    """Shocks (width by strength) and fan rays, as line collections."""
+    """Shocks (width by strength) as line collections; fan rays as light polylines."""
     scale = solution.accuracy_report.get("stress_scale") or max(
         abs(r.state.sigma) for r in solution.regions)
-    groups = {"shock": [], "release": [], "ray": [], "edge": []}
-    widths = {"shock": [], "release": []}
-    for front, xs, ts in view.waves:
-        segment = list(zip(xs, ts, strict=True))
-        if front.kind == "shock":
-            name = "shock" if front.jump >= 0.0 else "release"
-            groups[name].append(segment)
-            widths[name].append(shock_width(front.jump, scale))
-        elif is_edge_ray(front):
-            groups["edge"].append(segment)
-        else:
-            groups["ray"].append(segment)
-    styles = {"shock": SHOCK, "release": RELEASE_SHOCK, "ray": RAY, "edge": EDGE_RAY}
-    for name, segments in groups.items():
-        if segments:
-            style = styles[name]
+    waves = view.waves
+    for kind, style in (("ray", RAY), ("edge", EDGE_RAY)):
+        chosen = waves.kind == kind
+        if chosen.any():
+            ax.plot(*_polyline(waves.x[chosen], waves.t[chosen]), color=style["color"],
+                    lw=style["lw"], alpha=style["alpha"], ls=style.get("ls", "solid"),
+                    zorder=3, solid_capstyle="round")
+    for kind, style in (("shock", SHOCK), ("release", RELEASE_SHOCK)):
+        chosen = np.nonzero(waves.kind == kind)[0]
+        if chosen.size:
+            segments = np.stack([waves.x[chosen], waves.t[chosen]], axis=2)
+            widths = [shock_width(jump, scale) for jump in waves.jump[chosen]]
             ax.add_collection(LineCollection(segments, colors=style["color"],
-                                             linewidths=widths.get(name) or style["lw"],
-                                             zorder=3, capstyle="round"))
+                                             linewidths=widths, zorder=3.5,
+                                             capstyle="round"))
 
 
 def _collection(segments, style: dict, zorder: float) -> LineCollection:

@@ -9,9 +9,11 @@ SHOCK = {"color": "black", "lw": 1.7}
 RELEASE_SHOCK = {"color": "#23408e", "lw": 1.7}
 """A rarefaction shock: Hugoniot release, or any release in a linear elastic solid."""
 SHOCK_MIN_WIDTH = 0.6
-RAY = {"color": "#505050", "lw": 0.35}
-EDGE_RAY = {"color": "#202020", "lw": 0.8}
-"""The head and tail ray of a fan of several rays."""
+RAY = {"color": "#4a6fa5", "lw": 0.4, "alpha": 0.35}
+"""A ray of a fan: light, blue-grey and translucent, so that a dense fan (or a
+lattice of crossing fans) reads as a shaded band, never as a shock."""
+EDGE_RAY = {"color": "#2b4a7a", "lw": 0.8, "alpha": 0.9, "ls": (0, (4, 2))}
+"""The head and tail ray of a fan of several rays: dashed, in the fans' colour."""
 INTERFACE = {"color": "#4d4d4d", "lw": 1.0, "ls": (0, (5, 3))}
 CONTACT = {"color": "#9a9a9a", "lw": 0.8, "ls": (0, (1, 2))}
 GAP = {"color": "white", "lw": 1.6,
