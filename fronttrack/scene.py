@@ -107,7 +107,9 @@ class Accuracy:
     the neighbouring contact is merged like a negligible one (counted in the report);
     0, the default, keeps every one.  ``estimate_error``: run the scene again at half the
     characteristic step and report the estimated error of the records
-    (``fronttrack.error_estimate``) when it has fans.
+    (``fronttrack.error_estimate``) when it has fans.  ``max_seconds`` (s): stop the run
+    after this much wall-clock time and return the solution up to the time reached,
+    saying so in ``stats["stopped"]``; ``None`` (the default) runs to ``t_end``.
     """
 
     stress_tolerance: float | None = None
@@ -121,6 +123,7 @@ class Accuracy:
     spall_spacing: float | None = None
     contact_resolution: float = 0.0
     estimate_error: bool = False
+    max_seconds: float | None = None
 
 
 @dataclass(frozen=True)
@@ -261,6 +264,8 @@ class Scene:
         if not (isinstance(acc.max_events, int) and acc.max_events >= 1):
             raise SceneError(f"accuracy.max_events: must be a positive integer, "
                              f"got {acc.max_events!r}")
+        if acc.max_seconds is not None:
+            _finite_positive("accuracy.max_seconds", acc.max_seconds, "s")
         if self.spall_criterion is not None:
             self.spall_criterion.validate()
         return self
