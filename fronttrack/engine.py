@@ -294,7 +294,9 @@ class Engine:
                     f"(a lattice's {zones.NODES_PER_EVENT} nodes count as one event); "
                     f"raise max_events, shorten t_end or loosen the accuracy")
             if self.deadline is not None and time.perf_counter() > self.deadline:
-                self.stop_early(t, "time limit reached")
+                limit = self.acc.max_seconds
+                self.stop_early(t, "time limit reached" if limit is None
+                                else f"time limit of {limit:g} s reached")
                 break
             self._process(seed, t, x, timer=kind == "site")
             if self.progress is not None and counters.events % 1000 == 0:

@@ -13,6 +13,7 @@ previous run's files as they were, never a mixture, and no temporary file.
 from __future__ import annotations
 
 import os
+import secrets
 import shutil
 import signal
 import tempfile
@@ -108,10 +109,14 @@ class OutputSet:
         if final.is_symlink():
             final = Path(os.path.realpath(final))
         final.parent.mkdir(parents=True, exist_ok=True)
-        fd, name = tempfile.mkstemp(dir=final.parent, prefix=f".{final.name}.", suffix=".part")
-        os.close(fd)
-        self._pending.append((Path(name), final))
-        return Path(name)
+        while True:
+            temporary = final.parent / f".{final.name}.{secrets.token_hex(4)}.part"
+            try:  # created as open() would (mode 0o666 less the umask), unlike mkstemp
+                os.close(os.open(temporary, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o666))
+            except FileExistsError:
+                continue
+            self._pending.append((temporary, final))
+            return temporary
 
     def staging_dir(self, directory: Path) -> Path:
         """A new temporary directory inside ``directory``; ``commit`` moves its files up."""
