@@ -98,9 +98,9 @@ MAX_TRANSITS = 1000
 of thickness over reference sound speed): the waves have long spread into thousands
 of characteristics by then."""
 
-PROBE_NAME = re.compile(r"[A-Za-z0-9_.+-]{1,64}\Z")
+PROBE_NAME = re.compile(r"(?! )[A-Za-z0-9_.+ -]{1,64}(?<! )\Z")
 """A probe name becomes part of a file name (``probe_<name>.csv``): 1 to 64 letters,
-digits or ``_ . + -``."""
+digits, spaces or ``_ . + -``, not starting or ending with a space."""
 
 _SHOWN = reprlib.Repr()
 """How a bad value is quoted in an error message: long strings, lists and deep nests cut."""
@@ -342,7 +342,7 @@ def _probe(table: dict[str, Any], index: int) -> Probe:
     name = _string(table, "name", f"{path}.name")
     if not PROBE_NAME.match(name):
         raise SceneError(f"{path}.name: {_SHOWN.repr(name)} cannot be part of a file name "
-                         f"(use 1 to 64 letters, digits or _ . + -)")
+                         f"(use 1 to 64 letters, digits, inner spaces or _ . + -)")
     return Probe(name=name, at=at)
 
 
