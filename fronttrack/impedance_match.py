@@ -114,8 +114,8 @@ def impedance_match(flyer: Material, velocity: float, stack: list[Material],
     ``MatchError`` for a velocity that is not finite and positive or an empty stack.
     """
     if not (isinstance(velocity, (int, float)) and math.isfinite(velocity) and velocity > 0):
-        raise MatchError(f"velocity: the flyer must move toward the stack, at a finite "
-                         f"velocity > 0 m/s; got {velocity!r} m/s")
+        raise MatchError(f"velocity: the flyer velocity must be finite and > 0 m/s (toward "
+                         f"the stack), got {velocity!r} m/s")
     if not stack:
         raise MatchError("layers: the stack needs at least one layer")
     impact = solve_contact(flyer, flyer.reference_state(u=float(velocity)),
