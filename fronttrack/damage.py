@@ -95,12 +95,13 @@ def first_failure(solution, spacing: float, fractures) -> tuple[float, float] | 
     return best
 
 
-def run_with_damage(scene: Scene, progress=None):
+def run_with_damage(scene: Scene, progress=None, deadline=None):
     """Solve ``scene`` with its cumulative-damage criterion (see the module docstring).
 
     Each failure found adds a fracture and the scene is run again; the returned
     solution has them all, and its ``accuracy_report["spall_criterion"]`` records the
-    criterion and the runs.
+    criterion and the runs.  ``deadline`` (a ``time.perf_counter()`` value) stops the
+    run under way when it passes, and with it the search (``Engine.stop_early``).
     """
     criterion = scene.spall_criterion
     spacing = scene.accuracy.spall_spacing or 0.0
@@ -108,9 +109,10 @@ def run_with_damage(scene: Scene, progress=None):
     started = time.perf_counter()
     events = 0
     while True:
-        solution = Engine(scene, progress, fractures=fractures).run()
+        solution = Engine(scene, progress, fractures=fractures, deadline=deadline).run()
         events += solution.stats["events"]
-        found = first_failure(solution, spacing, fractures)
+        found = None if "stopped" in solution.stats else first_failure(
+            solution, spacing, fractures)
         if found is None:
             break
         if len(fractures) >= MAX_FRACTURES:

@@ -55,10 +55,14 @@ class EventLimitError(WavediagramError, RuntimeError):
 class Engine:
     """Evolves one scene; ``run()`` returns a ``Solution``."""
 
-    def __init__(self, scene: Scene, progress=None, fractures=()):
+    def __init__(self, scene: Scene, progress=None, fractures=(), deadline=None):
         """``fractures``: ``(x, t)`` points (m, s) at which the material is made to
-        fracture (the failures a cumulative-damage criterion found, ``fronttrack.damage``)."""
+        fracture (the failures a cumulative-damage criterion found, ``fronttrack.damage``).
+        ``deadline``: a ``time.perf_counter()`` value after which the run stops at the
+        time it has reached (``stop_early``)."""
         self.scene = scene.validate()
+        self.deadline = deadline
+        self.stopped = None
         self.acc = scene.accuracy
         self.fractures = tuple(fractures)
         self.progress = progress
@@ -289,11 +293,24 @@ class Engine:
                     f"events before t = {t * 1e6:.6g} us (t_end = {self.t_end * 1e6:.6g} us); "
                     f"(a lattice's {zones.NODES_PER_EVENT} nodes count as one event); "
                     f"raise max_events, shorten t_end or loosen the accuracy")
+            if self.deadline is not None and time.perf_counter() > self.deadline:
+                limit = self.acc.max_seconds
+                self.stop_early(t, "time limit reached" if limit is None
+                                else f"time limit of {limit:g} s reached")
+                break
             self._process(seed, t, x, timer=kind == "site")
             if self.progress is not None and counters.events % 1000 == 0:
                 self.progress(counters.events, t)
         self._finish()
         return Solution.from_engine(self, time.perf_counter() - start)
+
+    def stop_early(self, t: float, reason: str) -> None:
+        """End the solution at time ``t`` (s), before ``t_end``, and record why: the
+        scene of the solution then ends at ``t`` and ``stats["stopped"]`` says so."""
+        t = max(t, 1e-12 * self.t_end)  # a scene lasts some time, even one stopped at once
+        self.stopped = {"reason": reason, "t": t, "t_end": self.t_end}
+        self.t_end = t
+        self.scene = dataclasses.replace(self.scene, t_end=t)
 
     def _meeting_point(self, a: Front, b: Front, t: float) -> float:
         if a.speed == 0.0:

@@ -27,18 +27,21 @@ def refined_accuracy(accuracy, step: float):
                                characteristic_step=0.5 * step)
 
 
-def estimate_error(solution) -> dict:
+def estimate_error(solution, deadline=None) -> dict:
     """Error estimate of ``solution`` from a run of its scene at half the step.
 
     Returns, in SI units: ``sigma`` and ``u`` (largest estimated
     error over all probe histories, Pa and m/s), ``spall_t`` and ``spall_x``
     (s and m, ``None`` if either run has no spall), ``max_tension`` (Pa), and the
-    refined run's event count.
+    refined run's event count.  If ``deadline`` (a ``time.perf_counter()`` value) stops
+    the refined run, only ``method`` is returned, saying so.
     """
     scene = solution.scene
     step = solution.accuracy_report["characteristic_step"]
-    fine = Engine(dataclasses.replace(scene, accuracy=refined_accuracy(scene.accuracy, step))
-                  ).run()
+    fine = Engine(dataclasses.replace(scene, accuracy=refined_accuracy(scene.accuracy, step)),
+                  deadline=deadline).run()
+    if "stopped" in fine.stats:
+        return {"method": "not estimated: the time limit stopped the run at half the step"}
     sigma_error = u_error = 0.0
     for probe in scene.probes:
         coarse_h, fine_h = solution.history(probe.at), fine.history(probe.at)

@@ -38,7 +38,15 @@ from __future__ import annotations
 import math
 from dataclasses import asdict, dataclass
 
-from materials import Fan, Material, RiemannSolution, Shock, State, solve_contact
+from materials import (
+    Fan,
+    Material,
+    RiemannSolution,
+    Shock,
+    State,
+    WavediagramError,
+    solve_contact,
+)
 
 from .errors import SceneError, located
 from .material import material as named_material
@@ -95,6 +103,10 @@ class MatchRow:
     method: str
 
 
+class MatchError(WavediagramError, ValueError):
+    """An impedance match asked of a flyer that does not strike, or of no stack."""
+
+
 def match(flyer: Material | str, velocity: float | str, stack: list[Material | str],
           release: str = "isentrope", mirrored: bool = False) -> list[MatchRow]:
     """The first shock from a flyer through a stack: ``impedance_match`` for users.
@@ -146,12 +158,14 @@ def impedance_match(flyer: Material, velocity: float, stack: list[Material],
     ``flyer`` moves at ``velocity`` (m/s, > 0) toward the stack, which is at rest
     and unstressed; layers are semi-infinite.  ``release`` (``"isentrope"`` or
     ``"hugoniot"``) is the path of reflected release waves in the exact method;
-    ``mirrored`` selects the mirrored-Hugoniot shortcut at the interfaces.
+    ``mirrored`` selects the mirrored-Hugoniot shortcut at the interfaces.  Raises
+    ``MatchError`` for a velocity that is not finite and positive or an empty stack.
     """
     if not (isinstance(velocity, (int, float)) and math.isfinite(velocity) and velocity > 0):
-        raise ValueError(f"flyer velocity must be finite and > 0 m/s, got {velocity!r}")
+        raise MatchError(f"velocity: the flyer velocity must be finite and > 0 m/s (toward "
+                         f"the stack), got {velocity!r} m/s")
     if not stack:
-        raise ValueError("the stack needs at least one layer")
+        raise MatchError("layers: the stack needs at least one layer")
     impact = solve_contact(flyer, flyer.reference_state(u=float(velocity)),
                            stack[0], stack[0].reference_state(), release=release)
     rows = [_row("flyer", flyer, impact.left_star, impact.left_waves, None, EXACT)]

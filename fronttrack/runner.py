@@ -4,9 +4,13 @@
 again with each failure found inserted as a fracture (``fronttrack.damage``); with
 ``accuracy.estimate_error`` and simple waves present, it is run again at half the
 characteristic step and the difference reported (``fronttrack.error_estimate``).
+``accuracy.max_seconds`` bounds the wall-clock time of all these runs together: the
+run under way when it passes stops where it is (``Engine.stop_early``).
 """
 
 from __future__ import annotations
+
+import time
 
 from . import balance, fits
 from .damage import run_with_damage
@@ -24,15 +28,23 @@ def run(scene: Scene, progress=None) -> Solution:
     (``fronttrack.balance``) and ``warnings``: one line for each balance beyond what the
     accuracy settings promise, and for each material compressed beyond its fitted data
     (``fronttrack.fits``).
+    With ``accuracy.max_seconds`` the solution may end before ``t_end``; its
+    ``stats["stopped"]`` then says when and why.
     """
+    limit = scene.accuracy.max_seconds
+    deadline = None if limit is None else time.perf_counter() + limit
     if scene.spall_criterion is not None:
-        solution = run_with_damage(scene, progress)
+        solution = run_with_damage(scene, progress, deadline)
     else:
-        solution = Engine(scene, progress).run()
+        solution = Engine(scene, progress, deadline=deadline).run()
     if scene.accuracy.estimate_error:
-        estimate = (estimate_error(solution) if solution.stats["rays"] > 0
-                    else {"method": "exact: no simple waves in this solution", "sigma": 0.0,
-                          "u": 0.0})
+        if "stopped" in solution.stats:
+            estimate = {"method": "not estimated: the run stopped before t_end"}
+        elif solution.stats["rays"] == 0:
+            estimate = {"method": "exact: no simple waves in this solution", "sigma": 0.0,
+                        "u": 0.0}
+        else:
+            estimate = estimate_error(solution, deadline)
         solution.accuracy_report["error_estimate"] = estimate
     report = solution.accuracy_report
     report["balance"] = balance.balance(solution)

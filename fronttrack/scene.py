@@ -243,8 +243,10 @@ class Accuracy:
     the neighbouring contact is merged like a negligible one (counted in the report);
     0, the default, keeps every one.  ``estimate_error``: run the scene again at half the
     characteristic step and report the estimated error of the records
-    (``fronttrack.error_estimate``) when it has fans.  Quantities are SI numbers or
-    strings with units.
+    (``fronttrack.error_estimate``) when it has fans.  ``max_seconds`` (s): stop the run
+    after this much wall-clock time and return the solution up to the time reached,
+    saying so in ``stats["stopped"]``; ``None`` (the default) runs to ``t_end``.
+    Quantities are SI numbers or strings with units.
     """
 
     stress_tolerance: float | str | None = None
@@ -258,6 +260,7 @@ class Accuracy:
     spall_spacing: float | str | None = None
     contact_resolution: float | str = 0.0
     estimate_error: bool = False
+    max_seconds: float | None = None
 
     def __post_init__(self) -> None:
         for name, dimension, lowest in _ACCURACY_QUANTITIES:
@@ -290,7 +293,8 @@ _ACCURACY_QUANTITIES = (("stress_tolerance", "stress", ">"),
                         ("characteristic_step", "stress", ">"),
                         ("negligible_stress", "stress", ">="),
                         ("spall_spacing", "length", ">="),
-                        ("contact_resolution", "length", ">="))
+                        ("contact_resolution", "length", ">="),
+                        ("max_seconds", "time", ">"))
 """Dimensional fields of ``Accuracy``: name, dimension, and the bound on their value."""
 
 _SI_UNITS = {"stress": "Pa", "velocity": "m/s", "length": "m", "time": "s"}

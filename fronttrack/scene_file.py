@@ -33,16 +33,32 @@ A layer's material is a ``[materials.NAME]`` table of the same file (these
 shadow library names) or a library name (``materials.library``).  Unknown keys,
 values of the wrong type and bad values raise ``SceneError`` naming the key
 path (``layer[1].thickness``) and, for keys, the allowed ones.
+
+A file is refused before it can exhaust the machine: it is read up to
+``MAX_FILE_BYTES`` (so ``/dev/zero`` is not read for ever), decoded as UTF-8 (a
+byte-order mark is skipped), and the counts that set the work of a run are capped
+(``LIMITS``; the bound on ``t_end`` is ``MAX_TRANSITS`` sound transits of the stack).
+A run that is still too long for its user is stopped by ``accuracy.max_seconds``.
 """
 
 from __future__ import annotations
 
 import difflib
+import math
+import re
+import reprlib
 import tomllib
 from pathlib import Path
 from typing import Any
 
-from materials import IdealGas, Material, MaterialError, State, StateOutOfRangeError
+from materials import (
+    IdealGas,
+    Material,
+    MaterialError,
+    State,
+    StateOutOfRangeError,
+    WavediagramError,
+)
 from materials.library import FIELD_DIMENSIONS, get, material_from_spec
 
 from .scene import (
@@ -69,22 +85,69 @@ _PROBE_KEYS = ("name", "at", "kind", "side", "window")
 _ACCURACY_KEYS = ("rays_per_fan", "stress_tolerance", "velocity_tolerance",
                   "characteristic_step", "negligible_stress", "release",
                   "entropy_contacts", "max_events", "spall_spacing", "contact_resolution",
-                  "estimate_error")
+                  "estimate_error", "max_seconds")
 _SPALL_KEYS = ("criterion", "threshold", "exponent", "damage", "incubation_time", "stations")
 _SPALL_CRITERIA = ("tuler-butcher", "incubation")
 _BOUNDARY_DIMENSION = {"velocity": "velocity", "stress": "stress"}
 
+MAX_FILE_BYTES = 1 << 20
+"""A scene file is at most 1 MiB (a 10 000-point history takes about 400 kB)."""
+
+LIMITS = {
+    "layer": 1000,
+    "probe": 100,
+    "history": 10_000,
+    "rays_per_fan": 1000,
+    "max_events": 2_000_000,
+    "spall.stations": 10_000,
+}
+"""The largest count of each entry a scene file may give: layers, probes, points of one
+boundary history, characteristics per fan, events, damage stations per layer.  Each is
+far beyond what a diagram can show; a run with them all at the limit would still be
+stopped by the event limit or by ``accuracy.max_seconds``."""
+
+MAX_TRANSITS = 1000
+"""``t_end`` is at most this many sound transits of the stack (the sum over its layers
+of thickness over reference sound speed): the waves have long spread into thousands
+of characteristics by then."""
+
+PROBE_NAME = re.compile(r"(?! )[A-Za-z0-9_.+ -]{1,64}(?<! )\Z")
+"""A probe name becomes part of a file name (``probe_<name>.csv``): 1 to 64 letters,
+digits, spaces or ``_ . + -``, not starting or ending with a space."""
+
+_SHOWN = reprlib.Repr()
+"""How a bad value is quoted in an error message: long strings, lists and deep nests cut."""
+_SHOWN.maxlevel, _SHOWN.maxstring, _SHOWN.maxother, _SHOWN.maxlist = 3, 60, 60, 6
+
 
 def load_scene(path: str | Path) -> Scene:
-    """Read and validate the scene in the TOML file ``path``; its stem is the default title."""
+    """Read and validate the scene in the TOML file ``path``; its stem is the default title.
+
+    Raises ``SceneError`` for a file that cannot be read, is larger than
+    ``MAX_FILE_BYTES``, is not UTF-8, is not TOML (or nests deeper than it can be
+    read), or describes an invalid scene.
+    """
     path = Path(path)
     try:
         with path.open("rb") as stream:
-            doc = tomllib.load(stream)
+            data = stream.read(MAX_FILE_BYTES + 1)
     except OSError as exc:
         raise SceneError(f"{path}: cannot read the scene file ({exc.strerror})") from exc
+    if len(data) > MAX_FILE_BYTES:
+        raise SceneError(f"{path}: larger than {MAX_FILE_BYTES // 1024} KiB, the most a "
+                         f"scene file may have")
+    try:
+        text = data.decode("utf-8").removeprefix("\ufeff")
+    except UnicodeDecodeError as exc:
+        line = data.count(b"\n", 0, exc.start) + 1
+        raise SceneError(f"{path}: not UTF-8 text (byte {data[exc.start]:#04x} on line "
+                         f"{line}); save the scene as UTF-8") from None
+    try:
+        doc = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
         raise SceneError(f"{path}: not valid TOML: {exc}") from exc
+    except RecursionError:
+        raise SceneError(f"{path}: arrays or tables nested too deep to read") from None
     return scene_from_dict(doc, path.stem)
 
 
@@ -100,7 +163,7 @@ def scene_from_dict(doc: dict[str, Any], base_name: str = "") -> Scene:
     layer_tables = _array_of_tables(doc, "layer", required=True)
     layers = tuple(_layer(table, i, materials) for i, table in enumerate(layer_tables))
     probes = tuple(_probe(table, i) for i, table in enumerate(_array_of_tables(doc, "probe")))
-    return Scene(
+    scene = Scene(
         layers=layers,
         t_end=parse_quantity(doc["t_end"], "time", "t_end"),
         left=_boundary(doc.get("left", {}), "left"),
@@ -110,12 +173,44 @@ def scene_from_dict(doc: dict[str, Any], base_name: str = "") -> Scene:
         title=_string(doc, "title", "title", base_name),
         spall_criterion=_spall(_table(doc["spall"], "spall")) if "spall" in doc else None,
     )
+    return _check_duration(scene)
+
+
+def _check_duration(scene: Scene) -> Scene:
+    """``scene`` if its ``t_end`` is at most ``MAX_TRANSITS`` sound transits of the stack.
+
+    The transit time is the sum over the layers of thickness over the reference
+    Lagrangian sound speed (s); a layer without a positive one (a gas at zero
+    pressure) makes it unbounded.
+    """
+    transit = 0.0
+    for layer in scene.layers:
+        material = layer.material
+        try:
+            speed = material.sound_speed(material.v0, 0.0)
+        except WavediagramError:
+            return scene
+        if not (math.isfinite(speed) and speed > 0.0):
+            return scene
+        transit += layer.thickness / speed
+    if scene.t_end > MAX_TRANSITS * transit:
+        raise SceneError(f"t_end: {scene.t_end * 1e6:.6g} us is more than {MAX_TRANSITS} "
+                         f"sound transits of the stack (each {transit * 1e6:.4g} us); "
+                         f"allowed up to {MAX_TRANSITS * transit * 1e6:.6g} us")
+    return scene
+
+
+def _at_most(count: int, key: str, path: str) -> None:
+    """Raise ``SceneError`` if ``count`` entries of ``key`` exceed ``LIMITS[key]``."""
+    if count > LIMITS[key]:
+        raise SceneError(f"{path}: {count} is more than the {LIMITS[key]} a scene file may "
+                         f"give")
 
 
 # --- structure -----------------------------------------------------------------------------
 def _table(value: Any, path: str) -> dict[str, Any]:
     if not isinstance(value, dict):
-        raise SceneError(f"{path or 'document'}: expected a table, got {value!r}")
+        raise SceneError(f"{path or 'document'}: expected a table, got {_SHOWN.repr(value)}")
     return value
 
 
@@ -125,7 +220,8 @@ def _check_keys(table: dict[str, Any], allowed: tuple[str, ...], path: str) -> N
         if key not in allowed:
             close = difflib.get_close_matches(key, allowed, n=1)
             hint = f"; did you mean {close[0]!r}?" if close else ""
-            where = f"{path}.{key}" if path else key
+            shown = key if len(key) <= _SHOWN.maxstring else _SHOWN.repr(key)
+            where = f"{path}.{shown}" if path else shown
             raise SceneError(f"{where}: unknown key (allowed keys: {', '.join(allowed)}){hint}")
 
 
@@ -135,7 +231,9 @@ def _array_of_tables(doc: dict[str, Any], key: str, required: bool = False) -> l
         raise SceneError(f"{key}: missing (give at least one [[{key}]] table)")
     tables = doc.get(key, [])
     if not isinstance(tables, list) or not all(isinstance(t, dict) for t in tables):
-        raise SceneError(f"{key}: expected an array of tables written [[{key}]], got {tables!r}")
+        raise SceneError(f"{key}: expected an array of tables written [[{key}]], "
+                         f"got {_SHOWN.repr(tables)}")
+    _at_most(len(tables), key, f"{key}: number of [[{key}]] tables")
     return tables
 
 
@@ -147,7 +245,7 @@ def _string(table: dict[str, Any], key: str, path: str, default: str | None = No
         return default
     value = table[key]
     if not isinstance(value, str):
-        raise SceneError(f"{path}: expected a string, got {value!r}")
+        raise SceneError(f"{path}: expected a string, got {_SHOWN.repr(value)}")
     return value
 
 
@@ -254,7 +352,7 @@ def _boundary(table: Any, side: str) -> Boundary:
     kind = _string(table, "kind", f"{side}.kind", "free")
     if kind not in BOUNDARY_KINDS:
         raise SceneError(f"{side}.kind: must be one of {', '.join(BOUNDARY_KINDS)}, "
-                         f"got {kind!r}")
+                         f"got {_SHOWN.repr(kind)}")
     given = [key for key in ("value", "history") if key in table]
     if kind not in _BOUNDARY_DIMENSION:
         if given:
@@ -273,12 +371,13 @@ def _boundary(table: Any, side: str) -> Boundary:
     points = table["history"]
     if not isinstance(points, list) or not points:
         raise SceneError(f'{side}.history: expected a list of [time, value] pairs such as '
-                         f'[["0 us", "0 m/s"], ["1 us", "100 m/s"]], got {points!r}')
+                         f'[["0 us", "0 m/s"], ["1 us", "100 m/s"]], got {_SHOWN.repr(points)}')
+    _at_most(len(points), "history", f"{side}.history: number of points")
     history = []
     for i, point in enumerate(points):
         where = f"{side}.history[{i}]"
         if not isinstance(point, list) or len(point) != 2:
-            raise SceneError(f"{where}: expected a [time, value] pair, got {point!r}")
+            raise SceneError(f"{where}: expected a [time, value] pair, got {_SHOWN.repr(point)}")
         history.append((parse_quantity(point[0], "time", f"{where} time"),
                         parse_quantity(point[1], dimension, f"{where} value")))
     return _built(side, "boundary", Boundary, kind, tuple(history), bond)
@@ -296,7 +395,11 @@ def _probe(table: dict[str, Any], index: int) -> Probe:
     at = _required(table, "at", path)
     if at not in ("left", "right"):
         at = parse_quantity(at, "length", f"{path}.at")
-    return _built(path, "probe", Probe, name=_string(table, "name", f"{path}.name"), at=at,
+    name = _string(table, "name", f"{path}.name")
+    if not PROBE_NAME.match(name):
+        raise SceneError(f"{path}.name: {_SHOWN.repr(name)} cannot be part of a file name "
+                         f"(use 1 to 64 letters, digits, inner spaces or _ . + -)")
+    return _built(path, "probe", Probe, name=name, at=at,
                   kind=_string(table, "kind", f"{path}.kind", "point"),
                   side=table.get("side"), window=table.get("window"))
 
@@ -305,8 +408,13 @@ def _accuracy(table: dict[str, Any]) -> Accuracy:
     _check_keys(table, _ACCURACY_KEYS, "accuracy")
     defaults = Accuracy()
     rays = table.get("rays_per_fan")
+    rays = None if rays is None else _typed(table, "rays_per_fan", int, None)
+    if rays is not None:
+        _at_most(rays, "rays_per_fan", "accuracy.rays_per_fan")
+    max_events = _typed(table, "max_events", int, defaults.max_events)
+    _at_most(max_events, "max_events", "accuracy.max_events")
     return Accuracy(
-        rays_per_fan=None if rays is None else _typed(table, "rays_per_fan", int, None),
+        rays_per_fan=rays,
         stress_tolerance=_optional_quantity(table, "stress_tolerance", "stress",
                                             "accuracy.stress_tolerance", None),
         velocity_tolerance=_optional_quantity(table, "velocity_tolerance", "velocity",
@@ -317,13 +425,15 @@ def _accuracy(table: dict[str, Any]) -> Accuracy:
                                              "accuracy.negligible_stress", None),
         release=_typed(table, "release", str, defaults.release),
         entropy_contacts=_typed(table, "entropy_contacts", bool, defaults.entropy_contacts),
-        max_events=_typed(table, "max_events", int, defaults.max_events),
+        max_events=max_events,
         spall_spacing=_optional_quantity(table, "spall_spacing", "length",
                                          "accuracy.spall_spacing", None),
         contact_resolution=_optional_quantity(table, "contact_resolution", "length",
                                               "accuracy.contact_resolution",
                                               defaults.contact_resolution),
         estimate_error=_typed(table, "estimate_error", bool, defaults.estimate_error),
+        max_seconds=_optional_quantity(table, "max_seconds", "time", "accuracy.max_seconds",
+                                       defaults.max_seconds),
     )
 
 
@@ -333,7 +443,7 @@ def _typed(table: dict[str, Any], key: str, kind: type, default: Any,
     value = table.get(key, default)
     if not isinstance(value, kind) or (kind is int and isinstance(value, bool)):
         expected = getattr(kind, "__name__", "number")
-        raise SceneError(f"{path}.{key}: expected {expected}, got {value!r}")
+        raise SceneError(f"{path}.{key}: expected {expected}, got {_SHOWN.repr(value)}")
     return value
 
 
@@ -343,10 +453,11 @@ def _spall(table: dict[str, Any]) -> SpallCriterion:
     criterion = _required(table, "criterion", "spall")
     if criterion not in _SPALL_CRITERIA:
         raise SceneError(f"spall.criterion: must be one of {_SPALL_CRITERIA}, "
-                         f"got {criterion!r}")
+                         f"got {_SHOWN.repr(criterion)}")
     threshold = parse_quantity(_required(table, "threshold", "spall"), "stress",
                                "spall.threshold")
     stations = _typed(table, "stations", int, SpallCriterion.stations, "spall")
+    _at_most(stations, "spall.stations", "spall.stations")
     if criterion == "incubation":
         time = parse_quantity(_required(table, "incubation_time", "spall"), "time",
                               "spall.incubation_time")
@@ -368,7 +479,11 @@ def _damage_integral(text: Any, exponent: float) -> float:
     if value is None or power != exponent:
         raise SceneError(f"spall.damage: expected a number, a stress unit to the power "
                          f"spall.exponent ({exponent:g}) and a time unit, for example "
-                         f'"0.05 GPa^{exponent:g} us"; got {text!r}')
+                         f'"0.05 GPa^{exponent:g} us"; got {_SHOWN.repr(text)}')
     stress = parse_quantity(f"1 {stress_unit}", "stress", "spall.damage stress unit")
     time = parse_quantity(f"1 {parts[2]}", "time", "spall.damage time unit")
-    return value * stress**exponent * time
+    try:
+        return value * stress**exponent * time
+    except OverflowError:
+        raise SceneError(f"spall.exponent: {exponent:g} makes spall.damage overflow a float "
+                         f"in SI units (Pa^exponent s)") from None

@@ -21,8 +21,11 @@ Units are SI throughout.
 from __future__ import annotations
 
 import dataclasses
+import json
 import math
+from collections.abc import Iterator
 from dataclasses import dataclass, field
+from typing import TextIO
 
 import numpy as np
 
@@ -223,6 +226,8 @@ class Solution:
             "contacts": sum(f.kind == FrontKind.CONTACT for f in engine.fronts),
             "solve_time": elapsed,
         }
+        if engine.stopped is not None:
+            stats["stopped"] = engine.stopped
         acc = engine.acc
         report = engine.resolution.report() | {
             "entropy_contacts": acc.entropy_contacts,
@@ -251,21 +256,33 @@ class Solution:
     def fronts(self) -> list[FrontRecord]:
         """Every front as a frozen record (segments inside lattices included)."""
         if "fronts" not in self._cache:
-            records = [f.record() for f in self.engine_fronts]
-            for patch in self.patches:
-                records += patch.front_records()
-            self._cache["fronts"] = records
+            self._cache["fronts"] = list(self._front_records())
         return self._cache["fronts"]
 
     @property
     def regions(self) -> list[RegionRecord]:
         """Every region as a frozen record (cells inside lattices included)."""
         if "regions" not in self._cache:
-            records = [RegionRecord.of(r) for r in self.engine_regions]
-            for patch in self.patches:
-                records += patch.region_records()
-            self._cache["regions"] = records
+            self._cache["regions"] = list(self._region_records())
         return self._cache["regions"]
+
+    def _front_records(self) -> Iterator[FrontRecord]:
+        """The front records one by one (from the cache when it has them)."""
+        if "fronts" in self._cache:
+            yield from self._cache["fronts"]
+            return
+        yield from (f.record() for f in self.engine_fronts)
+        for patch in self.patches:
+            yield from patch.front_records()
+
+    def _region_records(self) -> Iterator[RegionRecord]:
+        """The region records one by one (from the cache when it has them)."""
+        if "regions" in self._cache:
+            yield from self._cache["regions"]
+            return
+        yield from (RegionRecord.of(r) for r in self.engine_regions)
+        for patch in self.patches:
+            yield from patch.region_records()
 
     # --- geometry -----------------------------------------------------------------------
     def _segments(self) -> dict:
@@ -633,55 +650,101 @@ class Solution:
     def to_dict(self, probes: bool = True, polygons: bool = True) -> dict:
         """A JSON-ready document of the solution (SI units); ``polygons=False`` leaves
         out the regions' X–t polygons (most of a large run's document)."""
-        regions = []
+        return {key: list(value) if isinstance(value, Iterator) else value
+                for key, value in self._document(probes, polygons)}
+
+    def write_json(self, stream: TextIO, probes: bool = True, progress=None,
+                   polygons: bool = True) -> None:
+        """Write ``to_dict(probes, polygons)`` as compact JSON to the text ``stream``, one
+        record at a time (the whole document is never held in memory).
+
+        ``progress``, if given, is called as ``progress(done, total)`` with the records
+        (regions, fronts and events) written so far, every ``JSON_PROGRESS_STEP``.
+        """
+        total = self.stats["regions"] + self.stats["fronts"] + len(self.events)
+        done = 0
+        stream.write("{")
+        for index, (key, value) in enumerate(self._document(probes, polygons)):
+            stream.write(("," if index else "") + json.dumps(key) + ":")
+            if not isinstance(value, Iterator):
+                stream.write(json.dumps(value, separators=(",", ":")))
+                continue
+            stream.write("[")
+            for count, item in enumerate(value):
+                stream.write(("," if count else "") + json.dumps(item, separators=(",", ":")))
+                done += 1
+                if progress is not None and done % JSON_PROGRESS_STEP == 0:
+                    progress(done, total)
+            stream.write("]")
+        stream.write("}")
+        if progress is not None:
+            progress(total, total)
+
+    def _document(self, probes: bool, polygons: bool = True
+                  ) -> Iterator[tuple[str, object]]:
+        """The keys of the JSON document with their values, in order; the long lists
+        (regions, fronts, events) as iterators of their entries.  Regions carry the
+        reader-facing ``number`` of the figures beside their internal ``id``."""
         numbers = region_numbers(self)
-        for r in self.regions:
-            s = r.state
-            temperature = r.material.temperature(s.v, s.e) if math.isfinite(s.v) else None
-            regions.append({
-                "number": numbers.get(r.id), "id": r.id, "layer": r.layer,
-                "material": r.material.name,
-                "sigma": s.sigma, "u": s.u, "v": _finite_or_none(s.v),
-                "rho": 1.0 / s.v if s.v > 0 else None, "e": s.e,
-                "plastic_strain": s.plastic_strain,
-                "temperature": temperature, "t_start": r.t_start, "t_end": r.t_end,
-                "in_fan": r.in_fan,
-            } | ({"polygon": [list(p) for p in r.polygon()]} if polygons else {}))
-        fronts = [{
-            "id": f.id, "kind": str(f.kind), "x0": f.x0, "t0": f.t0, "x1": f.x1, "t1": f.t1,
-            "speed": f.speed, "direction": f.direction, "jump": f.jump, "wave": f.wave,
-            "fan": f.fan, "ray_index": f.ray_index, "ray_count": f.ray_count,
-            "invariant": _finite_or_none(f.invariant),
-            "bond": f.bond or None, "left_region": f.left_region,
-            "right_region": f.right_region_id,
-            "kind_history": [[t, str(k)] for t, k in f.history],
-            "earlier_right_regions": [list(p) for p in f.earlier_regions],
-        } for f in self.fronts]
-        events = [{"t": e.t, "x": e.x, "kind": str(e.kind), "incoming": e.incoming,
-                   "outgoing": e.outgoing, "site": e.site, "nodes": e.nodes}
-                  for e in self.events]
-        doc = {
-            "title": self.scene.title,
-            "t_end": self.scene.t_end,
-            "regions": regions,
-            "fronts": fronts,
-            "events": events,
-            "spall": [{"x": s.x, "t": s.t, "tension": s.tension, "strength": s.strength,
-                       "layer": s.layer, "zone": list(s.zone) if s.zone else None}
-                      for s in self.spalls],
-            "max_tension": self.max_tension(),
-            "stats": self.stats,
-            "accuracy": self.accuracy_report,
-        }
+        yield "title", self.scene.title
+        yield "t_end", self.scene.t_end
+        yield "regions", (_region_entry(r, numbers.get(r.id), polygons)
+                          for r in self._region_records())
+        yield "fronts", map(_front_entry, self._front_records())
+        yield "events", map(_event_entry, self.events)
+        yield "spall", [{"x": s.x, "t": s.t, "tension": s.tension, "strength": s.strength,
+                         "layer": s.layer, "zone": list(s.zone) if s.zone else None}
+                        for s in self.spalls]
+        yield "max_tension", self.max_tension()
+        yield "stats", self.stats
+        yield "accuracy", self.accuracy_report
         if probes:
-            doc["probes"] = {
+            yield "probes", {
                 name: {"at": _probe_at(p), "t": h.t.tolist(), "sigma": h.sigma.tolist(),
                        "u": h.u.tolist(), "sigma_end": h.sigma_end.tolist(),
                        "u_end": h.u_end.tolist()} | _window_fields(self, p)
                 for (name, h), p in zip(self.probe_histories().items(), self.scene.probes,
                                         strict=True)
             }
-        return doc
+
+
+JSON_PROGRESS_STEP = 10_000
+"""Records of the JSON document written between two progress reports."""
+
+
+def _region_entry(r: RegionRecord, number: int | None, polygon: bool = True) -> dict:
+    """A region's JSON entry: its figure ``number`` (``None`` if not numbered), state (SI),
+    temperature (K) and, with ``polygon``, its X–t polygon."""
+    s = r.state
+    temperature = r.material.temperature(s.v, s.e) if math.isfinite(s.v) else None
+    return {
+        "number": number, "id": r.id, "layer": r.layer, "material": r.material.name,
+        "sigma": s.sigma, "u": s.u, "v": _finite_or_none(s.v),
+        "rho": 1.0 / s.v if s.v > 0 else None, "e": s.e,
+        "plastic_strain": s.plastic_strain,
+        "temperature": temperature, "t_start": r.t_start, "t_end": r.t_end,
+        "in_fan": r.in_fan,
+    } | ({"polygon": [list(p) for p in r.polygon()]} if polygon else {})
+
+
+def _front_entry(f: FrontRecord) -> dict:
+    """A front's JSON entry: kind, path in X–t and neighbouring regions."""
+    return {
+        "id": f.id, "kind": str(f.kind), "x0": f.x0, "t0": f.t0, "x1": f.x1, "t1": f.t1,
+        "speed": f.speed, "direction": f.direction, "jump": f.jump, "wave": f.wave,
+        "fan": f.fan, "ray_index": f.ray_index, "ray_count": f.ray_count,
+        "invariant": _finite_or_none(f.invariant),
+        "bond": f.bond or None, "left_region": f.left_region,
+        "right_region": f.right_region_id,
+        "kind_history": [[t, str(k)] for t, k in f.history],
+        "earlier_right_regions": [list(p) for p in f.earlier_regions],
+    }
+
+
+def _event_entry(e: EventRecord) -> dict:
+    """An event's JSON entry: time, place, kind and the fronts in and out."""
+    return {"t": e.t, "x": e.x, "kind": str(e.kind), "incoming": e.incoming,
+            "outgoing": e.outgoing, "site": e.site, "nodes": e.nodes}
 
 
 def _held(boundary, t: float, state: State, apart=()) -> State:

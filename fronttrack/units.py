@@ -46,6 +46,21 @@ UNITS: dict[str, dict[str, Fraction]] = {
 fractions so that a value is multiplied by an integer and divided by another:
 ``"3 mm"`` is exactly the float ``3 / 1000``, with no rounding of ``1e-3`` in it."""
 
+MAGNITUDES: dict[str, tuple[float, float]] = {
+    "length": (1e-9, 1e3),
+    "time": (1e-15, 1e3),
+    "velocity": (1e-6, 1e5),
+    "stress": (1.0, 1e13),
+    "density": (1e-3, 1e5),
+    "specific_energy": (1e-3, 1e10),
+    "specific_heat": (1e-3, 1e6),
+}
+"""The smallest and largest magnitude (SI) of a nonzero quantity of each dimension: 1 nm
+to 1 km, 1 fs to 1000 s, 1 um/s to 100 km/s, 1 Pa to 10 TPa, and so on.  Zero is always
+accepted; a value outside is a typing error or beyond what the solvers resolve (a
+thickness of 1e-30 mm, a velocity of 1e-300 m/s that no root finder brackets).
+Dimensionless numbers are checked by the field that uses them."""
+
 _NUMBER_AND_UNIT = re.compile(
     r"\s*(?P<number>[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?)\s*(?P<unit>.*?)\s*\Z")
 
@@ -71,34 +86,46 @@ def parse_quantity(text: str | float, dimension: str, field: str) -> float:
     Spaces between number and unit are optional and runs of spaces inside a unit
     count as one (``"J/(kg K)"``).  For ``dimension="dimensionless"`` the text is a
     bare number, and an int or float is accepted as is.  NaN and infinities are
-    rejected.  Raises ``SceneError``.
+    rejected, and so is a nonzero value outside ``MAGNITUDES``.  Raises ``SceneError``.
     """
     units = allowed_units(dimension)
     hint = "a plain number" if dimension == "dimensionless" else f"use one of {', '.join(units)}"
     if isinstance(text, (int, float)) and not isinstance(text, bool):
         if dimension != "dimensionless":
-            raise SceneError(f'{field}: missing units in "{text}" ({hint})')
+            raise SceneError(f'{field}: missing units in "{_cut(text)}" ({hint})')
         number, unit = float(text), ""
     elif isinstance(text, str):
         match = _NUMBER_AND_UNIT.match(text)
         if match is None:
             if _NOT_FINITE.match(text):
-                raise SceneError(f'{field}: "{text}" is not a finite number')
+                raise SceneError(f'{field}: "{_cut(text)}" is not a finite number')
             what = "a number" if dimension == "dimensionless" else "a number and a unit"
-            raise SceneError(f'{field}: expected {what}, got "{text}" ({hint})')
+            raise SceneError(f'{field}: expected {what}, got "{_cut(text)}" ({hint})')
         number = float(match["number"])
         unit = " ".join(match["unit"].split()).translate(_MICRO_SIGNS)
     else:
         example = "a number" if dimension == "dimensionless" else f'a string such as "1 {units[0]}"'
         raise SceneError(f"{field}: expected {example}, got {text!r}")
     if not math.isfinite(number):
-        raise SceneError(f'{field}: "{text}" is not a finite number')
+        raise SceneError(f'{field}: "{_cut(text)}" is not a finite number')
     if unit not in UNITS[dimension]:
         if unit == "":
-            raise SceneError(f'{field}: missing units in "{text}" ({hint})')
-        raise SceneError(f'{field}: unknown unit "{unit}" in "{text}" ({hint})')
+            raise SceneError(f'{field}: missing units in "{_cut(text)}" ({hint})')
+        raise SceneError(f'{field}: unknown unit "{_cut(unit)}" in "{_cut(text)}" ({hint})')
     factor = UNITS[dimension][unit]
-    return number * factor.numerator / factor.denominator
+    value = number * factor.numerator / factor.denominator
+    low, high = MAGNITUDES.get(dimension, (0.0, math.inf))
+    if value != 0.0 and not low <= abs(value) <= high:
+        si_unit = units[0]
+        raise SceneError(f'{field}: "{_cut(text)}" is outside the accepted magnitudes '
+                         f"(0, or {low:g} to {high:g} {si_unit} either sign)")
+    return value
+
+
+def _cut(text: str | float) -> str:
+    """``text`` as quoted in an error message: at most 60 characters."""
+    text = str(text)
+    return text if len(text) <= 60 else f"{text[:57]}..."
 
 
 def to_si(value: str | float, dimension: str, field: str) -> float:

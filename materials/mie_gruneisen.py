@@ -30,6 +30,10 @@ from .base import ROOM_TEMPERATURE, AffineEnergyMaterial, require_number, requir
 from .errors import MaterialError
 from .linear_elastic import _strength
 
+MIN_SLOPE, MAX_SLOPE = 0.1, 10.0
+"""Range of the Hugoniot slope ``s``: fits of real solids lie within 0.5 to 3; below 0.1
+the tension limit ``v0 (1 + 0.3 / s)`` leaves any table of the isentropes unbounded."""
+
 
 class MieGruneisen(AffineEnergyMaterial):
     """Mie–Grüneisen solid: rho0 (kg/m^3), c0 (m/s), s, gamma0, optional cv (J/(kg K))."""
@@ -44,6 +48,9 @@ class MieGruneisen(AffineEnergyMaterial):
         self.rho0 = require_positive("rho0", rho0, name)
         self.c0 = require_positive("c0", c0, name)
         self.s = require_positive("s", s, name)
+        if not MIN_SLOPE <= self.s <= MAX_SLOPE:
+            raise MaterialError(f"{name}: s must be in [{MIN_SLOPE}, {MAX_SLOPE}] (the slope "
+                                f"dUs/dup of the Hugoniot fit), got {s!r}")
         gamma0 = require_number("gamma0", gamma0, name)
         if not 0.0 <= gamma0 < 10.0:
             raise MaterialError(f"{name}: gamma0 must be in [0, 10), got {gamma0!r}")
