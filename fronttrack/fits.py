@@ -35,8 +35,8 @@ def fit_warnings(solution) -> list[str]:
     for material, v in densest.values():
         up = hugoniot_particle_velocity(material, v)
         if material.beyond_fit(up):
-            found.append(f"{material.name}: compressed to the principal-Hugoniot state of "
-                         f"up = {up:.4g} m/s, beyond the top of its fitted data "
+            found.append(f"{material.name}: compressed to the volume of the principal-"
+                         f"Hugoniot state of up = {up:.4g} m/s, beyond the top of its fitted data "
                          f"(up_max = {material.up_max:.4g} m/s): the Us-up fit is "
                          "extrapolated there")
     return found

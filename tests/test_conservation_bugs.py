@@ -162,7 +162,8 @@ def test_an_impact_beyond_a_hugoniot_fit_runs_and_states_the_extrapolation(tmp_p
         value = "3.5 km/s"
         """))
     (line,) = solution.accuracy_report["warnings"]
-    assert line.startswith("Cu: compressed to the principal-Hugoniot state of up = 3500 m/s")
+    assert line.startswith("Cu: compressed to the volume of the principal-Hugoniot state of "
+                           "up = 3500 m/s")
     assert "up_max = 3000 m/s" in line
 
 
