@@ -220,7 +220,9 @@ def caption_text(runs: Runs) -> str:
     a, b, c = firsts
     ea, eb, ec = estimates
     spacing = solutions[0].scene.accuracy.spall_spacing * MM
-    text = (f"Fans of {solutions[0].scene.accuracy.rays_per_fan} rays; the tension at a "
+    step = solutions[0].accuracy_report["characteristic_step"] * GPA
+    text = (f"Fans of characteristics {step:.3g} GPa apart (default accuracy); the tension "
+            f"at a "
             f"point rises in ray steps. (a) The threshold breaks the target at X = "
             f"{a.x * MM:.3f} mm, t = {a.t * US:.4f} µs, in the step that takes the tension "
             f"past {strength:.1f} GPa (to {a.tension * GPA:.2f} GPa; it carried "
