@@ -44,7 +44,9 @@ def _one(seed: int, queue) -> None:
         return
     report = solution.accuracy_report
     balance = report["balance"]
-    if balance["energy_error"] > balance["promised"]:
+    if balance["energy_error"] is None or balance["momentum_error"] is None:
+        outcome = "solved, balance not measurable (warned)"
+    elif balance["energy_error"] > balance["promised"]:
         outcome = "energy created beyond promise"
     elif max(balance["momentum_error"], -balance["energy_error"]) > balance["promised"]:
         outcome = "solved, beyond promise (warned)" if report["warnings"] else \

@@ -22,6 +22,8 @@ whose balance is beyond that, or that created energy beyond it, says so in one l
 
 from __future__ import annotations
 
+import math
+
 BALANCE_FACTOR = 2.0
 """Promised relative balance per unit relative record tolerance (energy is quadratic)."""
 
@@ -43,9 +45,12 @@ def balance(solution) -> dict:
     residual (positive: energy created), and the promise they are held to."""
     c = solution.conservation()
     energy_scale = max(abs(c["energy"][0]), abs(c["energy"][1]), abs(c["work"]), 1e-300)
+    momentum, energy = float(c["momentum_relative_error"]), float(c["energy_error"]
+                                                                 / energy_scale)
     return {
-        "momentum_error": float(c["momentum_relative_error"]),
-        "energy_error": float(c["energy_error"] / energy_scale),
+        # a record that is not finite (a face expanded to vacuum) is not a balance: None
+        "momentum_error": momentum if math.isfinite(momentum) else None,
+        "energy_error": energy if math.isfinite(energy) else None,
         "promised": promised_balance(solution.accuracy_report),
     }
 
@@ -54,6 +59,9 @@ def warnings(report: dict, entry: dict) -> list[str]:
     """One-line warnings for a balance ``entry`` (from ``balance``) beyond its promise,
     with the setting that most likely explains it (from the accuracy ``report``)."""
     promised = entry["promised"]
+    if entry["momentum_error"] is None or entry["energy_error"] is None:
+        return ["the momentum and energy balance could not be measured (a record at a "
+                "boundary is not finite, e.g. a gas expanded to vacuum there)"]
     found = []
     if entry["energy_error"] > promised:
         found.append(f"energy created: {entry['energy_error']:.2g} of the total, beyond the "

@@ -207,9 +207,10 @@ def _solve(scene, quiet: bool):
               f"(release: {report['release']}, {report['dropped_waves']} waves below "
               f"{report['negligible_stress']:.3g} Pa dropped)", file=sys.stderr)
         balance = report["balance"]
-        print(f"balance: momentum {balance['momentum_error']:.2g} of its content, energy "
-              f"{balance['energy_error']:+.2g} of the total (promised within "
-              f"{balance['promised']:.2g})", file=sys.stderr)
+        if balance["momentum_error"] is not None and balance["energy_error"] is not None:
+            print(f"balance: momentum {balance['momentum_error']:.2g} of its content, energy "
+                  f"{balance['energy_error']:+.2g} of the total (promised within "
+                  f"{balance['promised']:.2g})", file=sys.stderr)
         for line in report["warnings"]:
             print(f"wavediagram: warning: {line}", file=sys.stderr)
         for found in unlimited_tension(solution):
