@@ -159,7 +159,7 @@ def _run(args) -> int:
     solution = _solve(scene, quiet=args.quiet)
     written = _write_outputs(solution, args.output, json_path=args.json,
                              figures=not args.no_figures, compact=args.json_compact,
-                             quiet=args.quiet)
+                             quiet=args.quiet, image=(args.image_format, args.dpi))
     written += write_exports(solution, args)
     if not args.quiet:
         for path in written:
@@ -234,9 +234,11 @@ def _probe_files(scene) -> list[str]:
 
 
 def _write_outputs(solution, outdir: Path | None, json_path: Path | None,
-                   figures: bool, compact: bool = False, quiet: bool = False) -> list[Path]:
+                   figures: bool, compact: bool = False, quiet: bool = False,
+                   image: tuple[str, float] = ("png", 150.0)) -> list[Path]:
     """Write the requested files whole (``fronttrack.outputs.OutputSet``); their paths.
-    ``compact``: the JSON without region polygons.  Window records follow the set."""
+    ``compact``: the JSON without region polygons; ``image``: the figures' format and
+    dpi.  Window records follow the set."""
     with OutputSet() as outputs:
         if outdir is not None:
             json_path = json_path or outdir / "solution.json"
@@ -245,7 +247,8 @@ def _write_outputs(solution, outdir: Path | None, json_path: Path | None,
                 from .plotting.figures import save_standard_figures
 
                 save_standard_figures(solution, outputs.staging_dir(outdir),
-                                      progress=None if quiet else _figure_progress)
+                                      progress=None if quiet else _figure_progress,
+                                      image_format=image[0], dpi=image[1])
         if json_path is not None:
             with outputs.temporary(json_path).open("w") as stream:
                 solution.write_json(stream, polygons=not compact,

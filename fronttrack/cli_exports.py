@@ -16,6 +16,7 @@ from pathlib import Path
 
 from .errors import SceneError
 from .exports import peak_table, resampled, write_csv, write_json
+from .outputs import IMAGE_FORMATS
 from .units import parse_quantity
 from .windows import window_record
 
@@ -30,6 +31,10 @@ def add_export_flags(parser) -> None:
                         help="stations across the stack for --peaks (default: %(default)s)")
     parser.add_argument("--json-compact", action="store_true",
                         help="leave the region polygons out of the solution JSON")
+    parser.add_argument("--format", choices=IMAGE_FORMATS, default="png", dest="image_format",
+                        help="figure file format (default: %(default)s)")
+    parser.add_argument("--dpi", type=float, default=150.0,
+                        help="resolution of PNG figures, dots per inch (default: %(default)s)")
 
 
 def check_export_flags(args) -> None:
@@ -40,6 +45,8 @@ def check_export_flags(args) -> None:
             raise SceneError(f"--dt: must be > 0 s, got {args.dt!r}")
     if (args.dt is not None or args.peaks) and args.output is None:
         raise SceneError("--dt and --peaks write into the output directory: give -o DIR")
+    if not 20.0 <= args.dpi <= 1200.0:
+        raise SceneError(f"--dpi: must be in 20..1200, got {args.dpi:g}")
     if not 2 <= args.stations <= 100_000:
         raise SceneError(f"--stations: must be in 2..100000, got {args.stations}")
 

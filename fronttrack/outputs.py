@@ -23,6 +23,9 @@ from pathlib import Path
 
 from materials import WavediagramError
 
+IMAGE_FORMATS = ("png", "pdf", "svg")
+"""Figure file formats (``wavediagram run --format``); PDF and SVG are vector."""
+
 
 class OutputError(WavediagramError):
     """An output path cannot be written; the message names the option and the path."""

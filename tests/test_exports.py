@@ -73,3 +73,15 @@ at = "2 mm"
     doc = json.loads((out / "solution.json").read_text())
     assert doc["regions"] and all("polygon" not in region for region in doc["regions"])
     assert main(["run", str(scene), "--dt", "0 ns", "-o", str(out)]) == 2
+
+
+def test_figures_in_a_chosen_format_and_resolution(tmp_path):
+    from fronttrack.cli import main
+    scene = tmp_path / "scene.toml"
+    scene.write_text('t_end = "0.3 us"\n[[layer]]\nmaterial = "Cu"\nthickness = "1 mm"\n'
+                     'velocity = "200 m/s"\n[[layer]]\nmaterial = "Al2024"\nthickness = "1 mm"\n')
+    out = tmp_path / "out"
+    assert main(["run", str(scene), "-o", str(out), "--format", "svg", "--quiet"]) == 0
+    assert (out / "xt.svg").read_text().lstrip().startswith("<?xml")
+    assert not list(out.glob("*.png"))
+    assert main(["run", str(scene), "-o", str(tmp_path / "bad"), "--dpi", "5"]) == 2

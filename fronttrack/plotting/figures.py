@@ -34,6 +34,7 @@ from collections.abc import Callable
 from matplotlib.figure import Figure
 
 from ..numbering import region_numbers
+from ..outputs import IMAGE_FORMATS
 from .placed import Placed
 from .records import (
     plot_free_surface_velocity,
@@ -155,19 +156,23 @@ def _parallel(solution, parallel: bool | None) -> bool:
     return parallel and "fork" in multiprocessing.get_all_start_methods()
 
 
-def _draw(makers: dict, names, paths: dict, progress, count: int, order: dict) -> None:
-    """Draw and write the figures ``names``."""
+def _draw(makers: dict, names, paths: dict, progress, count: int, order: dict,
+          dpi: float = DPI) -> None:
+    """Draw and write the figures ``names`` (raster formats at ``dpi``)."""
     for name in names:
         if progress is not None:
-            progress(f"{name}.png", order[name], count)
-        makers[name]().savefig(paths[name], dpi=DPI)
+            progress(paths[name].name, order[name], count)
+        makers[name]().savefig(paths[name], dpi=dpi)
 
 
 def save_standard_figures(solution, outdir, prefix="", progress=None,
-                          parallel: bool | None = None) -> list[pathlib.Path]:
+                          parallel: bool | None = None, image_format: str = "png",
+                          dpi: float = DPI) -> list[pathlib.Path]:
     """Write the standard figures of ``solution`` into ``outdir``; return the paths written.
 
-    File names are ``prefix`` followed by the names in the module docstring.
+    File names are ``prefix`` followed by the names in the module docstring, with the
+    extension of ``image_format`` (one of ``IMAGE_FORMATS``); ``dpi`` sets the
+    resolution of raster formats.
     ``progress``, if given, is called as ``progress(name, index, count)`` before each
     figure is drawn (``index`` from 1; the forked ones are reported first).
     ``parallel``: draw ``FORKED`` in a forked process (``None``: when it pays, see the
@@ -176,21 +181,24 @@ def save_standard_figures(solution, outdir, prefix="", progress=None,
     outdir = pathlib.Path(outdir)
     outdir.mkdir(parents=True, exist_ok=True)
     makers = _figure_makers(solution)
-    paths = {name: outdir / f"{prefix}{name}.png" for name in makers}
+    if image_format not in IMAGE_FORMATS:
+        raise ValueError(f"image_format must be one of {IMAGE_FORMATS}, got {image_format!r}")
+    paths = {name: outdir / f"{prefix}{name}.{image_format}" for name in makers}
     order = {name: index for index, name in enumerate(makers, start=1)}
     forked = [name for name in makers if name in FORKED] if _parallel(solution, parallel) else []
     child = None
     if forked:
         child = multiprocessing.get_context("fork").Process(
-            target=_draw, args=(makers, forked, paths, None, len(makers), order))
+            target=_draw, args=(makers, forked, paths, None, len(makers), order, dpi))
         child.start()
         if progress is not None:
             for name in forked:
-                progress(f"{name}.png (in a second process)", order[name], len(makers))
+                progress(f"{paths[name].name} (in a second process)", order[name],
+                         len(makers))
     _draw(makers, [name for name in makers if name not in forked], paths, progress,
-          len(makers), order)
+          len(makers), order, dpi)
     if child is not None:
         child.join()
         if child.exitcode != 0:  # the fork failed: draw its figures here
-            _draw(makers, forked, paths, None, len(makers), order)
+            _draw(makers, forked, paths, None, len(makers), order, dpi)
     return list(paths.values())
