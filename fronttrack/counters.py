@@ -25,7 +25,9 @@ class Counters:
     specific energy jump (J/kg) of one whose energy was not negligible (its lower-energy
     side was kept); ``unresolved_contacts``: contacts merged
     because they were born closer than ``accuracy.contact_resolution`` to another;
-    ``suppressed_spalls`` and ``suppressed_tension`` (Pa): fractures not made because
+    ``cavitations``: fractures of materials without a spall strength, pulled to the most
+    tension their equation of state carries; ``suppressed_spalls`` and
+    ``suppressed_tension`` (Pa): fractures not made because
     they fell inside an earlier fracture zone or spacing, and the largest tension so
     carried.
     """
@@ -39,6 +41,7 @@ class Counters:
     neglected_entropy: float = 0.0
     neglected_contacts: int = 0
     neglected_contact_energy: float = 0.0
+    cavitations: int = 0
     unresolved_contacts: int = 0
     suppressed_spalls: int = 0
     suppressed_tension: float = 0.0

@@ -91,7 +91,7 @@ def solve(engine, site, region_left, region_right, t, x, incoming, timer):
                                     release)
         except NoSolutionError:
             carried = None
-        if carried is not None:
+        if carried is not None and not carried.separated:
             engine.counters.suppressed_spalls += 1
             engine.counters.suppressed_tension = max(engine.counters.suppressed_tension,
                                                      -sol.bonded_sigma)
@@ -99,6 +99,11 @@ def solve(engine, site, region_left, region_right, t, x, incoming, timer):
     if sol.separated:
         if inside:
             kind = EventKind.SPALL
+            if not math.isfinite(strength):
+                # no spall strength: pulled to the most tension its equation of state
+                # carries, the material cavitates there
+                strength = -sol.bonded_sigma
+                engine.counters.cavitations += 1
             spall.record(engine, x, t, -sol.bonded_sigma, strength, region_left.layer)
         else:
             kind = EventKind.GAP_OPEN

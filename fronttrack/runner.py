@@ -48,6 +48,9 @@ def run(scene: Scene, progress=None) -> Solution:
         solution.accuracy_report["error_estimate"] = estimate
     report = solution.accuracy_report
     report["balance"] = balance.balance(solution)
-    report["warnings"] = (report.get("warnings", []) + fits.fit_warnings(solution)
+    cavitated = ([f"{report['cavitations']} fracture(s) where a material without a spall "
+                  "strength was pulled to the most tension its equation of state carries "
+                  "(cavitation; see spall)"] if report.get("cavitations") else [])
+    report["warnings"] = (report.get("warnings", []) + cavitated + fits.fit_warnings(solution)
                           + balance.warnings(report, report["balance"]))
     return solution

@@ -236,6 +236,7 @@ class Solution:
             "neglected_entropy_volume_jump": counters.neglected_entropy,
             "neglected_entropy_contacts": counters.neglected_contacts,
             "neglected_contact_energy": counters.neglected_contact_energy,
+            "cavitations": counters.cavitations,
             "contact_resolution": acc.contact_resolution,
             "contacts_below_resolution": counters.unresolved_contacts,
             "spall_spacing": acc.spall_spacing,

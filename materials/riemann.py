@@ -18,7 +18,9 @@ transmission and reflection at interfaces, and reflection at boundaries
 Contacts that cannot carry tension: if the root lies below ``-tensile_strength``
 (0 for an unbonded interface or a gas, the spall strength inside a solid), the
 contact separates into two free surfaces; each side then unloads to
-``sigma = 0`` on its own and a gap opens because ``u_R > u_L``.
+``sigma = 0`` on its own and a gap opens because ``u_R > u_L``.  A tension beyond
+what the equations of state can carry separates the contact too (cavitation), with
+``bonded_sigma`` the most tension they carry.
 """
 
 from __future__ import annotations
@@ -120,13 +122,9 @@ def solve_contact(left_material, left: State, right_material, right: State,
     if phi_lo > 0.0:
         if lo == floor:
             return _separate(curve_l, curve_r, _bonded_estimate(phi, curve_l, curve_r, floor))
-        if lo >= 0.0:
-            return _separate(curve_l, curve_r, lo)  # a gas cannot pull: vacuum forms
-        raise NoSolutionError(
-            f"the contact between {left_material.name} and {right_material.name} would need "
-            f"a tension beyond {-lo / 1e9:.6g} GPa, outside their equations of state; give "
-            f"the materials a spall strength or make the interface unbonded"
-        )
+        # the tension would leave an equation of state: the material cavitates there (a
+        # gas cannot pull at all: vacuum forms), and bonded_sigma is that limit
+        return _separate(curve_l, curve_r, lo)
     sigma = bracketed_newton(phi, lo, hi, guess, f_lo=phi_lo, f_hi=phi_hi,
                              f_tol=noise * max(1.0, max(abs(lo), abs(hi)) / max(abs(guess), 1.0)))
     return _bonded(curve_l, curve_r, sigma)

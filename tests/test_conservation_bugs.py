@@ -298,3 +298,31 @@ def test_a_bonded_piston_pulls_the_material_into_tension():
     solution = run(_piston_scene(PULL[:4], bond="bonded"))
     assert solution.state_at(0.0, 0.4e-6).u == -100.0
     assert solution.state_at(0.0, 0.4e-6).sigma < -1e9
+
+
+def test_a_material_without_spall_strength_cavitates_at_its_equation_of_states_limit(tmp_path):
+    # was: "the contact ... would need a tension beyond ... GPa, outside their equations of
+    # state" and no solution; a hydrocode runs it, and the material fractures there
+    import json
+    solution = run(_scene(tmp_path, """
+        t_end = "0.6 us"
+        [materials.M]
+        model = "mie-gruneisen"
+        rho0 = "8000 kg/m3"
+        c0 = "4000 m/s"
+        s = 1.5
+        gamma0 = 2.0
+        [[layer]]
+        material = "M"
+        thickness = "1 mm"
+        velocity = "3 km/s"
+        [[layer]]
+        material = "M"
+        thickness = "1 mm"
+        """))
+    report = solution.accuracy_report
+    assert report["cavitations"] >= 1
+    first = solution.spalls[0]
+    assert first.strength == first.tension > 1e9
+    assert any("cavitation" in line for line in report["warnings"])
+    json.dumps(solution.to_dict(probes=False), allow_nan=False)
