@@ -389,7 +389,12 @@ class _March:
                      self.sp[j + 1])
 
     def _arrival(self, slot: int, x: float) -> float:
-        return max(self.t0[slot] + (x - self.x0[slot]) / self.sp[slot], self.t0[slot])
+        """When the characteristic in ``slot`` reaches ``x`` (inf if it stands still
+        elsewhere: a characteristic of a state with no sound speed, such as vacuum)."""
+        gap, speed = x - self.x0[slot], self.sp[slot]
+        if speed == 0.0:
+            return self.t0[slot] if gap == 0.0 else math.inf
+        return max(self.t0[slot] + gap / speed, self.t0[slot])
 
     # --- the pass -----------------------------------------------------------------------
     def run(self, cut: float) -> Lattice:

@@ -220,10 +220,11 @@ class Engine:
                 x_e = entry[4].x
             (x_l, s_l), (x_r, s_r) = left, right
             at_left, at_right = x_l + s_l * (t_e - now), x_r + s_r * (t_e - now)
+            # an edge running away at the signal speed is never reached
             if x_e < at_left:
-                reach = t_e + (at_left - x_e) / (c - s_l)
+                reach = t_e + (at_left - x_e) / (c - s_l) if c > s_l else math.inf
             elif x_e > at_right:
-                reach = t_e + (x_e - at_right) / (c + s_r)
+                reach = t_e + (x_e - at_right) / (c + s_r) if c > -s_r else math.inf
             else:
                 reach = t_e
             best = min(best, reach)

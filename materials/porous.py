@@ -490,7 +490,11 @@ class PorousWaveCurve(StressRange):
             waves += [self._mapped(w) for w in self.matrix.waves(self.alpha * start.sigma)]
             waves[-1] = Shock(ahead=waves[-1].ahead, behind=start, speed=waves[-1].speed,
                               direction=d)
-        speed = (behind.sigma - start.sigma) / (self.material.rho0 * (behind.u - start.u))
+        jump = behind.u - start.u
+        # a compaction jump too weak for its velocity change to leave rounding moves at
+        # the characteristic speed of its start
+        speed = ((behind.sigma - start.sigma) / (self.material.rho0 * jump) if jump != 0.0
+                 else d * self.characteristic_speed(start.sigma))
         waves.append(Shock(ahead=start, behind=behind, speed=speed, direction=d))
         return tuple(waves)
 

@@ -326,3 +326,18 @@ def test_a_material_without_spall_strength_cavitates_at_its_equation_of_states_l
     assert first.strength == first.tension > 1e9
     assert any("cavitation" in line for line in report["warnings"])
     json.dumps(solution.to_dict(probes=False), allow_nan=False)
+
+
+@pytest.mark.parametrize("seed", [41, 79, 282])
+def test_campaign_crashes_end_in_a_solution_or_a_named_error(seed):
+    # campaign seeds that divided by zero: a compaction jump with no velocity change
+    # (41), a characteristic of a state with no sound speed in a lattice (79), a zone
+    # edge running away at the signal speed (282)
+    from random_scenes import campaign_scene
+
+    from materials import WavediagramError
+    try:
+        solution = run(campaign_scene(seed, max_events=300))
+    except WavediagramError:
+        return
+    assert solution.accuracy_report["balance"]["momentum_error"] is not None
