@@ -23,14 +23,17 @@ def hugoniot_particle_velocity(material, v: float) -> float:
 
 def fit_warnings(solution) -> list[str]:
     """One line for each material whose states went beyond its fitted range."""
+    # the engine's regions and the lattices' cell volumes, read without building a
+    # record per cell (a large run holds ~1e5 of them)
+    pieces = [(r.material, r.state.v) for r in solution.engine_regions]
+    pieces += [(p.material, float(p.cell_v.min())) for p in solution.patches if len(p.cell_v)]
     densest = {}
-    for region in solution.regions:
-        material = region.material
-        if getattr(material, "up_max", None) is None or not math.isfinite(region.state.v):
+    for material, v in pieces:
+        if getattr(material, "up_max", None) is None or not math.isfinite(v):
             continue
         key = id(material)
-        if key not in densest or region.state.v < densest[key][1]:
-            densest[key] = (material, region.state.v)
+        if key not in densest or v < densest[key][1]:
+            densest[key] = (material, v)
     found = []
     for material, v in densest.values():
         up = hugoniot_particle_velocity(material, v)
