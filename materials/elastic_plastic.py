@@ -354,6 +354,7 @@ class ElasticPlasticWaveCurve(StressRange):
         self.release = release  # recorded only: isentrope and Hugoniot release coincide
         self.yield_low, self.yield_high = material.yield_stresses(ahead)
         self._last: tuple[float, tuple[State, State]] | None = None
+        self._limits: tuple[float, float] | None = None
 
     @property
     def impedance(self) -> float:
@@ -363,7 +364,19 @@ class ElasticPlasticWaveCurve(StressRange):
     # --- range ------------------------------------------------------------------------
     def sigma_limits(self) -> tuple[float, float]:
         """Stress range ``(lowest, highest)`` reachable inside the model's volume range."""
-        return self.sigma_min(), self.sigma_max()
+        if self._limits is None:  # every velocity_change checks it: computed once per curve
+            self._limits = (self.sigma_min(), self.sigma_max())
+        return self._limits
+
+    def linear_breaks(self) -> tuple[float, ...]:
+        """The stresses (Pa) where ``g`` changes slope: the finite yield stresses.
+
+        Between them, and beyond them up to the range's ends, ``g`` is linear in
+        ``sigma`` (slopes ``1/Z0`` inside the elastic range, ``1/ZB`` beyond), so a
+        contact between two such curves has a closed-form stress
+        (``materials.riemann``).
+        """
+        return tuple(s for s in (self.yield_low, self.yield_high) if math.isfinite(s))
 
     def sigma_max(self) -> float:
         """Stress at the smallest volume of the model's range."""

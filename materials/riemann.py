@@ -98,6 +98,10 @@ def solve_contact(left_material, left: State, right_material, right: State,
     # Tension *reaching* the strength separates: equality is decided within the
     # rounding of a computed stress (1e-12 relative), never by the last bits.
     floor = -tensile_strength * (1.0 - STRENGTH_TOLERANCE)
+    if hasattr(curve_l, "linear_breaks") and hasattr(curve_r, "linear_breaks"):
+        sigma = _piecewise_linear_root(phi, curve_l, curve_r, guess)
+        if sigma is not None and sigma >= floor:
+            return _bonded(curve_l, curve_r, sigma)
     # phi is a sum of particle velocities: its rounding noise is a few ulps of them.
     z_min = min(curve_l.impedance, curve_r.impedance)
     stress_scale = abs(left.sigma) + abs(right.sigma) + abs(guess)
@@ -128,6 +132,49 @@ def solve_contact(left_material, left: State, right_material, right: State,
     sigma = bracketed_newton(phi, lo, hi, guess, f_lo=phi_lo, f_hi=phi_hi,
                              f_tol=noise * max(1.0, max(abs(lo), abs(hi)) / max(abs(guess), 1.0)))
     return _bonded(curve_l, curve_r, sigma)
+
+
+def _piecewise_linear_root(phi, curve_l, curve_r, guess: float) -> float | None:
+    """The contact stress (Pa) when both wave curves are piecewise linear in ``sigma``.
+
+    Then ``phi`` is piecewise linear and increasing, with its slope changing only at
+    the curves' ``linear_breaks()`` (yield stresses).  Its sign at the breaks picks
+    the piece that holds the root, and one evaluation inside that piece gives it:
+    ``sigma = p - phi(p)/phi'(p)``, exact up to rounding, with no iteration.  Returns
+    ``None`` if the root lies outside the curves' common stress range (the general
+    path then decides between cavitation and an error).
+    """
+    low_l, high_l = curve_l.sigma_limits()
+    low_r, high_r = curve_r.sigma_limits()
+    low, high = max(low_l, low_r), min(high_l, high_r)
+    breaks = sorted({b for b in curve_l.linear_breaks() + curve_r.linear_breaks()
+                     if low < b < high})
+    below = above = None
+    for b in breaks:
+        if phi(b)[0] >= 0.0:
+            above = b
+            break
+        below = b
+    # a point inside the piece, near its break: the range's ends are far off (a volume
+    # 1000 v0), and the rounding of the root grows with the distance to the point
+    if below is not None and above is not None:
+        inside = 0.5 * (below + above)
+    elif above is not None:
+        inside = above - max(abs(above - guess), abs(above), 1.0)
+    elif below is not None:
+        inside = below + max(abs(guess - below), abs(below), 1.0)
+    else:
+        inside = guess
+    below = low if below is None else below
+    above = high if above is None else above
+    inside = min(max(inside, below), above)
+    value, slope = phi(inside)
+    if not slope > 0.0:
+        return None
+    sigma = inside - value / slope
+    if not low <= sigma <= high:
+        return None
+    return min(max(sigma, below), above)
 
 
 def _volume_noise(curve, state: State, sigma: float) -> float:

@@ -13,6 +13,7 @@ checked to 1e-12 relative.
 
 from __future__ import annotations
 
+import dataclasses
 import math
 
 import pytest
@@ -311,6 +312,55 @@ def test_dissipation_never_negative_over_load_unload_sequences(steps):
         assert dissipated == pytest.approx(expected, abs=1e-11 * scale)
         assert abs(STEEL.deviator(state)) <= 2 * Y / 3 * (1 + 1e-9)
         assert STEEL.dissipated_energy(state) >= -1e-12 * scale
+
+
+# --- the closed-form contact -------------------------------------------------------------------
+ALUMINIUM = ElasticPlastic("aluminium", 2785.0, 60.0e9, 27.6e9, 0.3e9)
+
+
+def _strained(material, history):
+    """The state a sequence of ``(direction, sigma)`` waves brings ``material`` to."""
+    state = material.reference_state()
+    for direction, sigma in history:
+        if sigma != state.sigma:
+            state = material.wave_curve(state, direction).state_at(sigma)
+    return state
+
+
+_HISTORY = st.lists(st.tuples(st.sampled_from((LEFT, RIGHT)),
+                              st.floats(min_value=-3e9, max_value=6e9)), max_size=3)
+
+
+@settings(max_examples=80, deadline=None)
+@given(history_l=_HISTORY, history_r=_HISTORY, du=st.floats(min_value=-800.0, max_value=800.0),
+       pair=st.sampled_from(((STEEL, STEEL), (STEEL, ALUMINIUM), (ALUMINIUM, STEEL))))
+def test_closed_form_contact_equals_the_iterative_solve(history_l, history_r, du, pair):
+    """Both wave curves are piecewise linear in sigma, so the contact stress has a closed
+    form (``riemann._piecewise_linear_root``); it agrees with the bracketed Newton
+    iteration used for every other material (run here with the closed form disabled)
+    to 1e-12 of the largest stress involved, and so do the star states."""
+    mat_l, mat_r = pair
+    left = dataclasses.replace(_strained(mat_l, history_l), u=du)
+    right = _strained(mat_r, history_r)
+    fast = solve_contact(mat_l, left, mat_r, right)
+    with pytest.MonkeyPatch.context() as patch:
+        patch.delattr(ElasticPlasticWaveCurve, "linear_breaks")
+        slow = solve_contact(mat_l, left, mat_r, right)
+    # rounding is relative to the largest stress the states went through
+    peaks = [abs(sigma) for _, sigma in history_l + history_r]
+    scale = max([abs(left.sigma), abs(right.sigma), abs(slow.bonded_sigma), Z0 * abs(du),
+                 *peaks]) + 1.0
+    assert fast.separated == slow.separated
+    assert abs(fast.bonded_sigma - slow.bonded_sigma) <= 1e-12 * scale
+    for a, b in ((fast.left_star, slow.left_star), (fast.right_star, slow.right_star)):
+        assert abs(a.u - b.u) <= 1e-12 * scale / ALUMINIUM.impedance
+        assert abs(a.v - b.v) <= 1e-12 * a.v
+
+    def strong(waves):  # the iteration may leave a wave of a few ulps where none is due
+        return [w for w in waves if abs(w.behind.sigma - w.ahead.sigma) > 1e-10 * scale]
+
+    for a, b in ((fast.left_waves, slow.left_waves), (fast.right_waves, slow.right_waves)):
+        assert [w.speed for w in strong(a)] == [w.speed for w in strong(b)]
 
 
 # --- limits --------------------------------------------------------------------------------------
