@@ -80,3 +80,24 @@ def campaign_scene(seed: int, max_events: int = 20_000) -> Scene:
                         max_events=max_events)
     return Scene(layers=tuple(layers), t_end=t_end, left=_boundary(rng, t_end),
                  right=_boundary(rng, t_end), accuracy=accuracy)
+
+
+def strength_stack_scene(seed: int) -> Scene:
+    """A random stack of solids with strength (the sample of ``benchmarks/run_length.py``).
+
+    2-4 inline elastic-plastic or finite-plastic layers (50 µm to 3 mm; the first moving
+    at 100-1000 m/s), bonded or unbonded, free or wall ends, run for 1-3 transit times
+    at default accuracy.
+    """
+    rng = random.Random(seed)
+    layers, transit = [], 0.0
+    for i in range(rng.randint(2, 4)):
+        material = _inline_material(rng, rng.choice(["elastic-plastic", "finite-plastic"]), i)
+        thickness = rng.choice([0.05e-3, 0.2e-3, 1e-3, 3e-3])
+        velocity = rng.uniform(100.0, 1000.0) if i == 0 else 0.0
+        layers.append(Layer(material, thickness, velocity,
+                            bond=rng.choice(["bonded", "unbonded"])))
+        transit += thickness / material.sound_speed(material.v0, 0.0)
+    return Scene(layers=tuple(layers), t_end=rng.uniform(1.0, 3.0) * transit,
+                 left=Boundary(rng.choice(["free", "free", "wall"])),
+                 right=Boundary(rng.choice(["free", "free", "wall"])))

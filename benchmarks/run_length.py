@@ -1,0 +1,166 @@
+"""Cost against simulated time: events and seconds as a scene runs longer.
+
+    python benchmarks/run_length.py            # writes benchmarks/RUN_LENGTH.md
+    python benchmarks/run_length.py --quick    # fewer lengths, for a smoke test
+
+For scenes whose wave content does not grow, events and solve time should grow
+linearly with the simulated time ``T``; the fitted exponent ``d ln(events)/d ln(T)``
+(least squares over the lengths that finished) says how far each scene is from that.
+Scenes: (a) a symmetric Al 2024 impact (2 mm onto 4 mm at 500 m/s, library spall
+strength) at 16 characteristics per fan and at default accuracy, run to 1-16 times the
+transit time of the stack at c0; (b) Davison's steel (5 mm onto 10 mm at 230 m/s, small
+strain ideal elastic–plastic, default accuracy), whose split waves multiply once the
+plates separate; (c) a 10 µm PMMA layer between tungsten anvils (piston at 100 m/s on
+the left, wall on the right), a ring-up; (d) random stacks of solids with strength
+(``tests/random_scenes.py::strength_stack_scene``, fixed seeds): how many finish
+within the cap.  Each run is capped at ``--max-seconds``
+(wall clock); a run stopped by the cap or by the event limit is listed and left out of
+the fit.  Times are wall-clock seconds on this machine (stated in the output).
+"""
+
+from __future__ import annotations
+
+import argparse
+import dataclasses
+import math
+import os
+import platform
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+
+ROOT = Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(ROOT))
+sys.path.insert(0, str(ROOT / "tests"))
+
+from random_scenes import strength_stack_scene  # noqa: E402
+
+import fronttrack as ft  # noqa: E402
+
+STEEL = ft.material("Davison steel", model="elastic-plastic", rho0="7870 kg/m3",
+                    **{"lambda": "123.1 GPa"}, mu="79.29 GPa", yield_strength="1 GPa")
+
+
+def symmetric_al(t_end: float, accuracy: ft.Accuracy) -> ft.Scene:
+    return ft.Scene(layers=(ft.Layer("Al2024", "2 mm", velocity="500 m/s"),
+                            ft.Layer("Al2024", "4 mm", bond="unbonded")),
+                    t_end=t_end, accuracy=accuracy, title="symmetric Al 2024")
+
+
+def steel(t_end: float, accuracy: ft.Accuracy) -> ft.Scene:
+    return ft.Scene(layers=(ft.Layer(STEEL, "5 mm", velocity="230 m/s"),
+                            ft.Layer(STEEL, "10 mm", bond="unbonded")),
+                    t_end=t_end, accuracy=accuracy, title="Davison steel")
+
+
+def ring_up(t_end: float, accuracy: ft.Accuracy) -> ft.Scene:
+    return ft.Scene(layers=(ft.Layer("W", "4 mm", velocity="100 m/s"),
+                            ft.Layer("PMMA", "10 um"), ft.Layer("W", "4 mm")),
+                    left=ft.Boundary("velocity", "100 m/s"), right=ft.Boundary("wall"),
+                    t_end=t_end, accuracy=accuracy, title="10 um PMMA between W anvils")
+
+
+def measure(build, lengths, accuracy, max_seconds: float) -> list[dict]:
+    rows = []
+    for t_end in lengths:
+        acc = ft.Accuracy(**{**accuracy, "max_seconds": max_seconds})
+        start = time.perf_counter()
+        try:
+            solution = ft.run(build(t_end, acc))
+        except ft.WavediagramError as error:
+            rows.append({"t_end": t_end, "outcome": type(error).__name__,
+                         "seconds": time.perf_counter() - start})
+            continue
+        seconds = time.perf_counter() - start
+        stopped = solution.stats.get("stopped")
+        balance = solution.accuracy_report["balance"]
+        rows.append({"t_end": t_end, "events": solution.stats["events"], "seconds": seconds,
+                     "outcome": "time cap" if stopped else "finished",
+                     "energy": balance["energy_error"], "momentum": balance["momentum_error"]})
+    return rows
+
+
+def exponent(rows: list[dict], key: str) -> float:
+    done = [r for r in rows if r["outcome"] == "finished" and r.get(key, 0) > 0]
+    if len(done) < 2:
+        return math.nan
+    x = np.log([r["t_end"] for r in done])
+    y = np.log([r[key] for r in done])
+    return float(np.polyfit(x, y, 1)[0])
+
+
+def table(title: str, rows: list[dict]) -> list[str]:
+    lines = [f"### {title}", "",
+             "| t_end (µs) | outcome | events | seconds | energy balance | momentum balance |",
+             "|---:|---|---:|---:|---:|---:|"]
+    for r in rows:
+        events = r.get("events", "")
+        energy = f"{r['energy']:+.1e}" if r.get("energy") is not None else ""
+        momentum = f"{r['momentum']:.1e}" if r.get("momentum") is not None else ""
+        lines.append(f"| {r['t_end'] * 1e6:.3g} | {r['outcome']} | {events} | "
+                     f"{r['seconds']:.2f} | {energy} | {momentum} |")
+    lines += ["", "Fitted exponent over the finished runs: "
+              f"events ~ T^{exponent(rows, 'events'):.2f}, "
+              f"time ~ T^{exponent(rows, 'seconds'):.2f}.", ""]
+    return lines
+
+
+def strength_stacks(seeds: range, max_seconds: float) -> list[str]:
+    """(d): each random stack with a wall-clock cap; the outcomes counted."""
+    outcomes, seconds = {}, []
+    for seed in seeds:
+        scene = strength_stack_scene(seed)
+        scene = dataclasses.replace(
+            scene, accuracy=dataclasses.replace(scene.accuracy, max_seconds=max_seconds))
+        start = time.perf_counter()
+        try:
+            solution = ft.run(scene)
+            outcome = "time cap" if solution.stats.get("stopped") else "finished"
+        except ft.WavediagramError as error:
+            outcome = type(error).__name__
+        seconds.append(time.perf_counter() - start)
+        outcomes[outcome] = outcomes.get(outcome, 0) + 1
+    lines = [f"### (d) random stacks of solids with strength, seeds {seeds.start}-"
+             f"{seeds.stop - 1}, cap {max_seconds:g} s", "", "| outcome | scenes |", "|---|---:|"]
+    lines += [f"| {name} | {count} |" for name, count in sorted(outcomes.items())]
+    lines += ["", f"Median time {np.median(seconds):.2f} s, longest {max(seconds):.2f} s.", ""]
+    return lines
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--quick", action="store_true")
+    parser.add_argument("--max-seconds", type=float, default=120.0)
+    args = parser.parse_args()
+    transit = 6e-3 / 5328.0
+    factors = (1, 2, 4) if args.quick else (1, 2, 4, 8, 16)
+    cases = [
+        ("(a) symmetric Al 2024, 2 mm onto 4 mm at 500 m/s, 16 rays per fan", symmetric_al,
+         [f * transit for f in factors], {"rays_per_fan": 16}),
+        ("(a') the same at default accuracy", symmetric_al,
+         [f * transit for f in factors], {}),
+        ("(b) Davison steel, 5 mm onto 10 mm at 230 m/s, default accuracy", steel,
+         [t * 1e-6 for t in ((2, 3, 4) if args.quick else (2, 3, 4, 5, 6))], {}),
+        ("(c) 10 µm PMMA between W anvils, piston 100 m/s, default accuracy", ring_up,
+         [t * 1e-6 for t in ((0.25, 0.5) if args.quick else (0.25, 0.5, 1.0, 1.5))], {}),
+    ]
+    lines = ["# Cost against simulated time", "",
+             f"`python benchmarks/run_length.py`; {platform.machine()}, {os.cpu_count()} cores, "
+             f"Python {platform.python_version()}, {time.strftime('%Y-%m-%d')}; "
+             f"each run capped at {args.max_seconds:g} s of wall clock.", ""]
+    for title, build, lengths, accuracy in cases:
+        rows = measure(build, lengths, accuracy, args.max_seconds)
+        lines += table(title, rows)
+        print("\n".join(table(title, rows)), flush=True)
+    stacks = strength_stacks(range(10 if args.quick else 30), 10.0)
+    print("\n".join(stacks), flush=True)
+    lines += stacks
+    out = ROOT / "benchmarks" / ("RUN_LENGTH_quick.md" if args.quick else "RUN_LENGTH.md")
+    out.write_text("\n".join(lines))
+    print(f"wrote {out}")
+
+
+if __name__ == "__main__":
+    main()
