@@ -441,7 +441,7 @@ def _lineage(run: _Run) -> int:
     its input rays if they share one and nothing in it reflects from an edge (a boundary
     or a gap), else ``MIXED`` (a lattice does not follow each characteristic's origin)."""
     rays = {f.lineage for f in run.slots if f.kind == FrontKind.RAY}
-    edges = any(f.kind in (FrontKind.BOUNDARY, FrontKind.GAP)
+    edges = any(f is not None and f.kind in (FrontKind.BOUNDARY, FrontKind.GAP)
                 for f in (*run.slots, run.left_end, run.right_end))
     return rays.pop() if len(rays) == 1 and not edges else MIXED
 
