@@ -22,11 +22,13 @@ from __future__ import annotations
 import dataclasses
 from dataclasses import dataclass
 
+import numpy as np
 from scipy.optimize import brentq
 
 from materials import Material, WavediagramError
 
 from .errors import SceneError
+from .fronts import MIXED
 from .impedance_match import match
 from .runner import run
 from .scene import Scene
@@ -88,10 +90,10 @@ def velocity_for(target: float | str, flyer: Material | str, stack: list,
 class Window:
     """The one-dimensional window at a station.
 
-    ``first_shock`` (s): when the first wave (a jump) reaches the station;
-    ``end`` (s): when the state it set first changes; ``duration = end -
-    first_shock``.  ``censored`` is true when nothing changed it before the
-    run's end (``end`` is then ``t_end`` and the true window is longer).
+    ``first_shock`` (s): when the first wave reaches the station; ``end`` (s): when
+    the first wave that does not descend from it arrives; ``duration = end -
+    first_shock``.  ``censored`` is true when none arrived before the run's end
+    (``end`` is then ``t_end`` and the true window is longer).
     """
 
     first_shock: float
@@ -101,31 +103,35 @@ class Window:
 
 
 def one_dimensional_window(solution: Solution, at) -> Window:
-    """How long does the station ``at`` see the state the first shock set?
+    """How long does the station ``at`` see only the first shock and its own reflections?
 
-    ``at`` is a probe name, ``"left"``, ``"right"`` or X (m).  The window opens
-    when the first jump reaches the station and closes when the next wave
-    arrives, whatever its origin: the release from a flyer's back, a reflection
-    from an end of the stack or from an interface between (a plane-wave code
-    has no lateral edges; an edge release of a finite plate is not modelled).
-    Exact for scenes made only of shocks (their arrival times are exact).
+    ``at`` is a probe name, ``"left"``, ``"right"`` or X (m).  The window opens when
+    the first wave reaches the station and closes when the first wave of another
+    lineage arrives (``Front.lineage``): a release from the flyer's back, a
+    reflection from an edge of the stack (a free surface, a wall, a gap), or any
+    wave that met one of those on its way.  The first shock's own transmissions and
+    reflections at the interfaces between layers keep its lineage and leave the
+    window open, though they change the state.  (A plane-wave code has no lateral
+    edges: the edge release of a finite plate is not modelled.)  Exact for scenes
+    made only of shocks, whose arrival times are exact.
 
     Raises
     ------
     SceneError
-        No jump reaches the station before the run's end.
+        No wave reaches the station before the run's end.
     """
-    history = solution.history(at)
-    for k in range(1, len(history.t)):
-        if history.states[k] != history.ends[k - 1]:
-            break
-    else:
+    times, lineages = solution.arrivals(at)
+    if times.size == 0:
         raise SceneError(f"at: no shock reaches {at!r} before t_end")
-    constant = history.states[k] == history.ends[k]
-    last = k + 1 >= len(history.t)
-    end = history.t[k] if not constant else history.stop if last else history.t[k + 1]
-    return Window(first_shock=float(history.t[k]), end=float(end),
-                  duration=float(end - history.t[k]), censored=bool(constant and last))
+    first = float(times[0])
+    # the waves of the first instant (an incident wave and what it sends out, at a
+    # station on an interface) within the rounding of the times
+    together = times <= first + 1e-12 * solution.scene.t_end
+    origin = int(lineages[0]) if np.all(lineages[together] == lineages[0]) else MIXED
+    foreign = np.nonzero(~together & ((lineages != origin) | (origin == MIXED)))[0]
+    censored = foreign.size == 0
+    end = solution.scene.t_end if censored else float(times[foreign[0]])
+    return Window(first_shock=first, end=end, duration=end - first, censored=censored)
 
 
 def with_thickness(scene: Scene, layer: int, thickness: float) -> Scene:

@@ -373,9 +373,9 @@ class Engine:
         material_left = region_left.material if region_left is not None else None
         material_right = region_right.material if region_right is not None else None
         left_specs = outgoing.wave_fronts(self, sol.left_waves, material_left, t, x, incoming,
-                                          -1)
+                                          -1, site or new_site)
         right_specs = outgoing.wave_fronts(self, sol.right_waves, material_right, t, x,
-                                           incoming, +1)
+                                           incoming, +1, site or new_site)
         left_star = sol.left_star if left_specs is not None else (
             region_left.state if region_left is not None else None)
         right_star = sol.right_star if right_specs is not None else (

@@ -28,6 +28,9 @@ from .kinds import FrontKind
 UNKNOWN = object()
 """A region's isentrope not looked up yet."""
 
+MIXED = -1
+"""The lineage of a wave that descends from waves of several lineages (see ``Front``)."""
+
 
 @dataclass(eq=False, slots=True)
 class Region:
@@ -83,6 +86,10 @@ class Front:
     ``history`` records ``(t, kind)`` changes of a site's
     kind; ``boundary_steps`` the ``(t, value)`` steps of a prescribed history;
     ``earlier_regions`` records ``(t, region_id)``: the region on the right until ``t``.
+    ``lineage`` names the wave a wave descends from (``fronttrack.outgoing.lineage``):
+    a wave born at an impact or at an edge of the material (a boundary, a gap's face)
+    starts a lineage, the waves an event sends out inherit the lineage of the waves that
+    met there, and ``MIXED`` when those differ.
     """
 
     id: int
@@ -115,6 +122,7 @@ class Front:
     history: list = field(default_factory=list)
     boundary_steps: list = field(default_factory=list)
     earlier_regions: list = field(default_factory=list)
+    lineage: int = MIXED
 
     @property
     def is_site(self) -> bool:
@@ -134,7 +142,8 @@ class Front:
             fan=self.fan, ray_index=self.ray_index, ray_count=self.ray_count,
             invariant=self.invariant, bond=self.bond, side=self.side,
             left_region=self.left_region, right_region_id=self.right_region_id,
-            history=tuple(self.history), earlier_regions=tuple(self.earlier_regions))
+            history=tuple(self.history), earlier_regions=tuple(self.earlier_regions),
+            lineage=self.lineage)
 
 
 @dataclass(frozen=True, slots=True)
@@ -146,7 +155,8 @@ class FrontRecord:
     ``ray_index``, ``ray_count`` and ``invariant`` (a ray's own Riemann invariant, m/s);
     for sites ``bond``, ``side`` and ``history`` (``(t, kind)`` changes of kind);
     ``left_region`` and ``right_region_id`` the regions it separates, and
-    ``earlier_regions`` the ``(t, id)`` regions on its right before ``t``.
+    ``earlier_regions`` the ``(t, id)`` regions on its right before ``t``; ``lineage`` the
+    wave it descends from (see ``Front``).
     """
 
     id: int
@@ -169,6 +179,7 @@ class FrontRecord:
     right_region_id: int | None = None
     history: tuple = ()
     earlier_regions: tuple = ()
+    lineage: int = MIXED
 
     @property
     def is_site(self) -> bool:

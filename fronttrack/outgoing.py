@@ -5,6 +5,10 @@ characteristic (``_weak_shock_ray``).  A simple wave (fan) is a family of
 characteristics (``characteristics.simple_waves``): one ray per characteristic, each
 with its own Riemann invariant, the cells between them on the fan's isentrope.  A
 family weaker than the negligible stress is dropped and counted.
+
+Every wave carries a lineage (``lineage``): which wave it descends from, so that a
+station can tell the reflections of the first shock that reached it (they inherit its
+lineage) from a release of another origin (``design.one_dimensional_window``).
 """
 
 from __future__ import annotations
@@ -15,8 +19,27 @@ from dataclasses import dataclass
 from characteristics.simple_waves import discretise_fan
 from materials import Fan, State
 
-from .fronts import UNKNOWN, Front
+from .fronts import MIXED, UNKNOWN, Front
 from .kinds import FrontKind
+
+EDGES = (FrontKind.BOUNDARY, FrontKind.GAP)
+"""Sites at an edge of the material: the waves they send out start a lineage."""
+
+
+def lineage(engine, incoming, site) -> int:
+    """The lineage of the waves an event sends out in one direction.
+
+    A new one (a new id) where no wave came in (an impact, a boundary's own step) or
+    where the event is at an edge of the material (a free surface, a wall, a prescribed
+    boundary, a gap's faces): what an edge reflects is a release or reflection from that
+    edge.  Otherwise the lineage shared by the waves that met, ``MIXED`` if they differ:
+    transmitted and reflected waves at an interface, the continuation of a shock or ray,
+    descend from the waves that made them.
+    """
+    if not incoming or (site is not None and site.kind in EDGES):
+        return engine.next_wave_id()
+    first = incoming[0].lineage
+    return first if all(f.lineage == first for f in incoming) else MIXED
 
 
 @dataclass(frozen=True, slots=True)
@@ -31,12 +54,13 @@ class WaveSpec:
 
 
 def wave_fronts(engine, waves, material, t: float, x: float, incoming,
-                direction: int) -> list[WaveSpec] | None:
+                direction: int, site=None) -> list[WaveSpec] | None:
     """Fronts for the waves of one direction leaving an event at ``(x, t)``, leading first.
 
     ``None`` when the whole family is weaker than the negligible stress (it is dropped).
     A single-ray wave leaving a ray's event keeps that ray's fan, so the rays of a fan
-    stay one fan through the events that continue them.
+    stay one fan through the events that continue them.  ``site``: the event's site, if
+    any (its kind decides the waves' ``lineage``).
     """
     if not waves:
         return []
@@ -46,25 +70,27 @@ def wave_fronts(engine, waves, material, t: float, x: float, incoming,
         engine.counters.dropped_waves += 1
         return None
     parent = next((f for f in incoming if f.direction == direction), None)
+    origin = lineage(engine, incoming, site)
     specs = []
     for wave in waves:
         if isinstance(wave, Fan):
-            specs += _fan_fronts(engine, wave, material, t, x, parent, direction)
+            specs += _fan_fronts(engine, wave, material, t, x, parent, direction, origin)
             continue
-        ray = _weak_shock_ray(engine, wave, material, t, x, parent, direction)
+        ray = _weak_shock_ray(engine, wave, material, t, x, parent, direction, origin)
         if ray is not None:
             specs.append(ray)
         else:
             wave_id = (parent.wave if parent is not None and parent.kind == FrontKind.SHOCK
                        else engine.next_wave_id())
             front = engine.new_front(FrontKind.SHOCK, x, t, speed=wave.speed, wave=wave_id,
-                                     direction=direction,
+                                     direction=direction, lineage=origin,
                                      jump=wave.behind.sigma - wave.ahead.sigma)
             specs.append(WaveSpec(front, wave.ahead, wave.behind, UNKNOWN))
     return specs
 
 
-def _weak_shock_ray(engine, shock, material, t, x, parent, direction) -> WaveSpec | None:
+def _weak_shock_ray(engine, shock, material, t, x, parent, direction,
+                    origin) -> WaveSpec | None:
     """A shock weaker than the characteristic step, as a compression characteristic.
 
     At the resolution of the run it cannot be told from a compression wave: its entropy
@@ -88,13 +114,14 @@ def _weak_shock_ray(engine, shock, material, t, x, parent, direction) -> WaveSpe
         engine.next_wave_id()
     speed = direction * table.speed(*middle)
     front = engine.new_front(FrontKind.RAY, x, t, speed=speed,
-                             fan=fan_id, ray_count=1, direction=direction,
+                             fan=fan_id, ray_count=1, direction=direction, lineage=origin,
                              jump=shock.behind.sigma - shock.ahead.sigma,
                              invariant=middle[0 if direction > 0 else 1])
     return WaveSpec(front, shock.ahead, shock.behind, table)
 
 
-def _fan_fronts(engine, fan: Fan, material, t, x, parent, direction) -> list[WaveSpec]:
+def _fan_fronts(engine, fan: Fan, material, t, x, parent, direction,
+                origin) -> list[WaveSpec]:
     # a one-ray wave uses the table of its isentrope if there is one already; a family
     # of several characteristics (which lattices will cross) builds one
     several = abs(fan.behind.sigma - fan.ahead.sigma) > engine.resolution.step
@@ -113,7 +140,7 @@ def _fan_fronts(engine, fan: Fan, material, t, x, parent, direction) -> list[Wav
         invariant = table.invariants(ch.state)[which] if table is not None else math.nan
         front = engine.new_front(FrontKind.RAY, x, t, speed=ch.speed, fan=fan_id,
                                  ray_index=ch.index if index is None else index,
-                                 ray_count=count, direction=direction,
+                                 ray_count=count, direction=direction, lineage=origin,
                                  jump=ch.behind.sigma - ch.ahead.sigma, invariant=invariant)
         specs.append(WaveSpec(front, ch.ahead, ch.behind,
                               table if table is not None else UNKNOWN))

@@ -15,7 +15,7 @@ import numpy as np
 
 from materials import State
 
-from .fronts import FrontRecord, RegionRecord, polygon_of
+from .fronts import MIXED, FrontRecord, RegionRecord, polygon_of
 from .kinds import FrontKind
 
 
@@ -30,7 +30,8 @@ class LatticePatch:
     Cells: ``cell_id``, the state arrays, ``cell_t0``/``cell_t1``, and their boundary
     chains as point arrays (``chain_x``, ``chain_t``, grouped by cell and side:
     ``chain_start[i]`` and ``chain_split[i]`` delimit cell ``i``'s left chain, then its
-    right chain up to ``chain_start[i + 1]``).
+    right chain up to ``chain_start[i + 1]``).  ``lineage``: that of all its segments
+    (``fronttrack.zones._lineage``).
     """
 
     material: object
@@ -60,6 +61,7 @@ class LatticePatch:
     chain_t: np.ndarray
     chain_start: np.ndarray
     chain_split: np.ndarray
+    lineage: int = MIXED
 
     def state(self, index: int) -> State:
         """The state of cell ``index`` (position in the arrays, not its id)."""
@@ -86,7 +88,8 @@ class LatticePatch:
             jump=float(self.seg_jump[i]), fan=int(self.seg_fan[i]),
             ray_index=int(self.seg_ray_index[i]), ray_count=int(self.seg_ray_count[i]),
             invariant=float(self.seg_invariant[i]), left_region=int(self.seg_left[i]),
-            right_region_id=int(self.seg_right[i])) for i in range(len(self.seg_id))]
+            right_region_id=int(self.seg_right[i]), lineage=self.lineage)
+            for i in range(len(self.seg_id))]
 
     def region_records(self) -> list[RegionRecord]:
         """The cells as frozen region records."""

@@ -290,7 +290,7 @@ class Solution:
         """Front segments as arrays: one per front and per region on its right."""
         if "segments" not in self._cache:
             cols = {name: [] for name in ("x0", "t0", "t1", "speed", "right", "ray",
-                                          "family", "invariant")}
+                                          "family", "invariant", "lineage")}
             for f in self.engine_fronts:
                 if f.t1 is None or f.t1 < f.t0:
                     continue
@@ -301,7 +301,7 @@ class Solution:
                                         ("t1", end), ("speed", f.speed),
                                         ("right", -1 if region is None else region),
                                         ("ray", is_ray), ("family", f.direction),
-                                        ("invariant", f.invariant)):
+                                        ("invariant", f.invariant), ("lineage", f.lineage)):
                         cols[name].append(value)
                     start = end
             arrays = {name: np.array(values) for name, values in cols.items()}
@@ -309,11 +309,13 @@ class Solution:
                 extra = {"x0": patch.seg_x0, "t0": patch.seg_t0, "t1": patch.seg_t1,
                          "speed": patch.seg_speed, "right": patch.seg_right,
                          "ray": np.ones(len(patch.seg_id), bool),
-                         "family": patch.seg_direction, "invariant": patch.seg_invariant}
+                         "family": patch.seg_direction, "invariant": patch.seg_invariant,
+                         "lineage": np.full(len(patch.seg_id), patch.lineage)}
                 for name in arrays:
                     arrays[name] = np.concatenate([arrays[name], extra[name]])
             arrays["right"] = arrays["right"].astype(int)
             arrays["ray"] = arrays["ray"].astype(bool)
+            arrays["lineage"] = arrays["lineage"].astype(int)
             self._cache["segments"] = arrays
         return self._cache["segments"]
 
@@ -422,6 +424,12 @@ class Solution:
     def crossing_times(self, x: float) -> np.ndarray:
         """Times (s) at which a moving front passes the station ``x`` (m)."""
         return np.unique(self._crossings(x)[0])
+
+    def arrivals(self, at) -> tuple[np.ndarray, np.ndarray]:
+        """The waves that pass the station ``at`` (as ``history``): their times (s), in
+        order, and lineages (``Front.lineage``: the wave each descends from)."""
+        times, index = self._crossings(self.station(at))
+        return times, self._segments()["lineage"][index]
 
     def station(self, at) -> float:
         """Lagrangian position (m) of a probe location: ``"left"``, ``"right"``, metres,

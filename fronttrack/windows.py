@@ -62,16 +62,30 @@ class OpticalWindow:
         return self.a * np.asarray(u_interface) + (1.0 - self.a) * np.asarray(u_far)
 
 
+LIF_INDEX_1550 = 1.38275
+"""Ambient index of LiF at 1550 nm and 297 K, from the Sellmeier formula of H. H. Li,
+J. Phys. Chem. Ref. Data 5, 329 (1976) (as given in the refractiveindex.info database,
+``main/LiF/nk/Li.yml``): ``n^2 = 1 + 0.92549 l^2/(l^2 - 0.07376^2) + 6.96747 l^2/(l^2 -
+32.790^2)``, ``l`` in um."""
+
 WINDOWS: dict[str, OpticalWindow] = {
     "LiF": OpticalWindow(
-        name="LiF", a=1.2669, b=0.1178, wavelength=1550e-9, material="LiF",
-        source="Jensen, Holtkamp, Rigg and Dolan, 'Accuracy limits and window corrections "
-               "for photon Doppler velocimetry', J. Appl. Phys. 101, 013523 (2007); LiF "
-               "[100], 1550 nm, linear fit to 115 GPa. The coefficients were recalled, "
-               "not checked against the paper: check them before relying on them"),
+        name="LiF", a=1.2669, b=0.11585, wavelength=1550e-9,  # b = LIF_INDEX_1550 - a
+        material="LiF",
+        source="a = 1.2669: Jensen, Holtkamp, Rigg and Dolan, 'Accuracy limits and window "
+               "corrections for photon Doppler velocimetry', J. Appl. Phys. 101, 013523 "
+               "(2007), LiF [100] at 1550 nm (the value could not be read in the paper "
+               "itself; it agrees within 0.8 % from 0.3 to 2 km/s with the later fit of Rigg, "
+               "Knudson, Scharff and Hixson, J. Appl. Phys. 116, 033515 (2014), Eq. 16, "
+               "u = 0.7895 u_app^0.9918 in km/s). b = n0 - a with n0 = 1.38275, the ambient "
+               "index at 1550 nm (H. H. Li, J. Phys. Chem. Ref. Data 5, 329 (1976)); the "
+               "0.1178 used before gave n0 = 1.3847, 0.002 too high"),
 }
-"""Windows with a cited fit, by name.  PMMA and sapphire are not listed: no source
-for their coefficients could be checked when this was written (see ``optical_window``)."""
+"""Windows with a cited fit, by name.  PMMA and sapphire are not listed: no fit of their
+index against density could be read in a source (Barker and Hollenbach, J. Appl. Phys. 41,
+4208 (1970) for PMMA and sapphire; Jones, Robinson and Gupta for c-cut sapphire) with the
+search tools available; give them as ``OpticalWindow`` with the coefficients of the
+source you use."""
 
 
 def optical_window(window: str | OpticalWindow) -> OpticalWindow:

@@ -33,7 +33,7 @@ from characteristics import lattice as moc
 from materials import State
 
 from . import interactions, spall
-from .fronts import Front, Region
+from .fronts import MIXED, Front, Region
 from .kinds import BoundaryKind, EventKind, FrontKind
 from .patch import LatticePatch
 from .solution import EventRecord
@@ -381,6 +381,7 @@ def _splice(engine, run: _Run, lat: moc.Lattice, t: float) -> None:
         regions[j] = region
     # --- segments: close the inputs that ended, make fronts of the new live ones
     fans = _fan_ids(engine, run, lat)
+    origin = _lineage(run)
     for i, front in enumerate(run.slots):
         if front.kind == FrontKind.RAY and not math.isnan(lat.seg_t1[i]):
             front.alive = False
@@ -399,7 +400,7 @@ def _splice(engine, run: _Run, lat: moc.Lattice, t: float) -> None:
             speed=float(lat.seg_speed[s]), direction=int(lat.seg_family[s]),
             jump=_jump(lat, left_cell, right_cell, int(lat.seg_family[s])),
             fan=int(fans[s]), ray_index=source.ray_index, ray_count=source.ray_count,
-            invariant=float(lat.seg_own[s]))
+            invariant=float(lat.seg_own[s]), lineage=origin)
         front.left_region = int(cell_ids[left_cell])
         live_fronts.append(front)
     # --- the regions right of each front, and the sites' earlier ones
@@ -417,10 +418,10 @@ def _splice(engine, run: _Run, lat: moc.Lattice, t: float) -> None:
         engine.push_pair(a, b, max(lat.cut, t) if math.isfinite(lat.cut) else t)
     for end, emitted in lat.emitted.items():
         _send_through(engine, run.left_end if end == "left" else run.right_end, end, emitted,
-                      lat.cut)
+                      lat.cut, origin)
     # --- the interior as one patch
     patch = _patch(engine, run, lat, cell_ids, layer_of, is_live_cell, is_live_seg, fans,
-                   chain_x, chain_t, chain_side, bounds)
+                   chain_x, chain_t, chain_side, bounds, origin)
     if patch is not None:
         engine.patches.append(patch)
     _note_tension(engine, lat, k)
@@ -435,7 +436,18 @@ def _splice(engine, run: _Run, lat: moc.Lattice, t: float) -> None:
         nodes=lat.nodes))
 
 
-def _send_through(engine, join: Front, end: str, emitted: dict, cut: float) -> None:
+def _lineage(run: _Run) -> int:
+    """The lineage of every ray a lattice makes (``fronttrack.outgoing.lineage``): that of
+    its input rays if they share one and nothing in it reflects from an edge (a boundary
+    or a gap), else ``MIXED`` (a lattice does not follow each characteristic's origin)."""
+    rays = {f.lineage for f in run.slots if f.kind == FrontKind.RAY}
+    edges = any(f is not None and f.kind in (FrontKind.BOUNDARY, FrontKind.GAP)
+                for f in (*run.slots, run.left_end, run.right_end))
+    return rays.pop() if len(rays) == 1 and not edges else MIXED
+
+
+def _send_through(engine, join: Front, end: str, emitted: dict, cut: float,
+                  origin: int) -> None:
     """The rays a lattice sent through the contact ``join`` at its ``end``, made fronts of
     the far side with the cells between them (see ``characteristics.lattice.Join``)."""
     times = emitted["t"]
@@ -464,7 +476,7 @@ def _send_through(engine, join: Front, end: str, emitted: dict, cut: float) -> N
         behind_state = state
         rays.append(engine.new_front(
             FrontKind.RAY, x, t_k, speed=float(emitted["speed"][k]),
-            direction=1 if right else -1, fan=fan, ray_index=k, ray_count=n,
+            direction=1 if right else -1, fan=fan, ray_index=k, ray_count=n, lineage=origin,
             jump=behind_state.sigma - ahead.state.sigma, invariant=float(emitted["own"][k])))
     # the far cell now ends at the first ray, not at the contact
     (far_cell.left_points if right else far_cell.right_points).append((x, float(times[0])))
@@ -539,7 +551,7 @@ def _fan_ids(engine, run: _Run, lat) -> np.ndarray:
 
 
 def _patch(engine, run, lat, cell_ids, layer_of, is_live_cell, is_live_seg, fans, chain_x,
-           chain_t, chain_side, bounds) -> LatticePatch | None:
+           chain_t, chain_side, bounds, origin) -> LatticePatch | None:
     """The segments and cells that began and ended inside the lattice."""
     k = len(run.slots)
     segs = np.nonzero(~is_live_seg)[0]
@@ -577,7 +589,7 @@ def _patch(engine, run, lat, cell_ids, layer_of, is_live_cell, is_live_seg, fans
         cell_t1=lat.cell_t1[cells],
         chain_x=np.concatenate(xs) if xs else np.empty(0),
         chain_t=np.concatenate(ts) if ts else np.empty(0),
-        chain_start=np.array(starts), chain_split=np.array(splits))
+        chain_start=np.array(starts), chain_split=np.array(splits), lineage=origin)
 
 
 def _note_tension(engine, lat, k: int) -> None:

@@ -35,7 +35,14 @@ from abc import ABC, abstractmethod
 import numpy as np
 
 from .errors import MaterialError, StateOutOfRangeError
-from .quadrature import UNIT_NODES, UNIT_WEIGHTS, panel_edges, points_for, unit_rule
+from .quadrature import (
+    UNIT_NODES,
+    UNIT_WEIGHTS,
+    panel_edges,
+    points_for,
+    unit_rule,
+    unit_rule_lists,
+)
 from .state import RIGHT, State
 
 _CHEB_POINTS = 20
@@ -45,12 +52,14 @@ _SCALAR_RULE_POINTS = 8
 """Quadrature rules up to this many points are evaluated with floats, not arrays."""
 
 
-def _clenshaw(coefs: list[float], x: float) -> float:
-    """Chebyshev series ``sum c_k T_k(x)`` at a float ``x`` (Clenshaw recurrence)."""
+def _clenshaw(series: tuple[float, tuple[float, ...]], x: float) -> float:
+    """Chebyshev series ``sum c_k T_k(x)`` at a float ``x`` (Clenshaw recurrence);
+    ``series`` is ``(c_0, (c_n, ..., c_1))``, the tail stored in the order it is used."""
+    first, tail = series
     b1 = b2 = 0.0
-    for c in reversed(coefs[1:]):
+    for c in tail:
         b1, b2 = 2.0 * x * b1 - b2 + c, b1
-    return x * b1 - b2 + coefs[0]
+    return x * b1 - b2 + first
 
 ROOM_TEMPERATURE = 298.15
 """Temperature (K) of the unstressed reference state."""
@@ -322,7 +331,8 @@ class AffineEnergyMaterial(Material):
             theta = np.pi * (k + 0.5) / _CHEB_POINTS
             coefs = (2.0 / _CHEB_POINTS) * values @ np.cos(np.outer(theta, k))
             coefs[:, 0] *= 0.5
-            table = (edges.tolist(), coefs, coefs.tolist())
+            table = (edges.tolist(), coefs,
+                     [(row[0], tuple(row[:0:-1])) for row in coefs.tolist()])
             self.__dict__["_f_table_cache"] = table
         return table
 
@@ -335,12 +345,12 @@ class AffineEnergyMaterial(Material):
 
     def _f(self, v):
         """The material function ``F(v) = int_{v0}^{v} A(w) E(w) dw`` (floats or arrays)."""
-        edges, coefs, coef_lists = self._f_table()
+        edges, coefs, series = self._f_table()
         last = len(edges) - 2
         if isinstance(v, float):
             i = min(max(bisect.bisect_right(edges, v) - 1, 0), last)
             a, b = edges[i], edges[i + 1]
-            return _clenshaw(coef_lists[i], (2.0 * v - a - b) / (b - a))
+            return _clenshaw(series[i], (2.0 * v - a - b) / (b - a))
         v = np.asarray(v, dtype=float)
         index = np.clip(np.searchsorted(edges, v, side="right") - 1, 0, last)
         a, b = np.asarray(edges)[index], np.asarray(edges)[index + 1]
@@ -381,14 +391,16 @@ class AffineEnergyMaterial(Material):
         total = 0.0
         start = through.v if start is None else start
         panel = self._PANEL_FRACTION * self.v0
-        edges = (start, v) if abs(v - start) <= panel else panel_edges(start, v, panel)
+        edges = (start, v) if abs(v - start) <= panel else panel_edges(start, v, panel).tolist()
         points = points_for(edges[1] - edges[0], self._SINGULARITY_FRACTION * self.v0)
-        unit_nodes, unit_weights = unit_rule(points)
+        scalar = points <= _SCALAR_RULE_POINTS
+        unit_nodes, unit_weights = unit_rule_lists(points) if scalar else unit_rule(points)
         for a, b in zip(edges[:-1], edges[1:], strict=True):
-            if points <= _SCALAR_RULE_POINTS:
+            if scalar:
                 # a short piece: a few float evaluations beat numpy's per-call overhead
                 c2 = []
-                for node in (a + (b - a) * unit_nodes).tolist():
+                for x in unit_nodes:
+                    node = a + (b - a) * x
                     e_node = (label - self._f(node)) / self._energy_factor(node)
                     c2.append(self.sound_speed_squared(node, e_node))
             else:
@@ -400,6 +412,7 @@ class AffineEnergyMaterial(Material):
                     f"{self.name}: the isentrope leaves the region of real sound speed near "
                     f"density {1.0 / b:.6g} kg/m3"
                 )
+            weights = unit_weights if scalar else unit_weights.tolist()
             total += (b - a) * math.fsum(w * math.sqrt(c) for w, c in zip(
-                unit_weights.tolist(), c2, strict=True))
+                weights, c2, strict=True))
         return self.rho0 * total

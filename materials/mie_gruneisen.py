@@ -29,6 +29,7 @@ from functools import lru_cache
 from .base import ROOM_TEMPERATURE, AffineEnergyMaterial, require_number, require_positive
 from .errors import MaterialError
 from .linear_elastic import _strength
+from .principal import PrincipalHugoniotCurve
 
 MIN_SLOPE, MAX_SLOPE = 0.1, 10.0
 """Range of the Hugoniot slope ``s``: fits of real solids lie within 0.5 to 3; below 0.1
@@ -74,6 +75,13 @@ class MieGruneisen(AffineEnergyMaterial):
         v_min = self.volume_range()[0]
         return max(v_min, ahead.v - 0.95 * (ahead.v - singular)) if singular > v_min else v_min
 
+    def wave_curve(self, ahead, direction: int, release: str = "isentrope"):
+        """As ``Material.wave_curve``; from the reference state, compression is the
+        closed-form principal Hugoniot (``materials.principal``)."""
+        if ahead.v == self.v0 and ahead.e == 0.0 and ahead.sigma == 0.0:
+            return PrincipalHugoniotCurve(self, ahead, direction, release)
+        return super().wave_curve(ahead, direction, release)
+
     def beyond_fit(self, up: float) -> bool:
         """True when a principal-Hugoniot particle velocity exceeds the fitted range."""
         return self.up_max is not None and abs(up) > self.up_max
@@ -93,6 +101,22 @@ class MieGruneisen(AffineEnergyMaterial):
         dsh_deps = k * (1.0 + self.s * eps) / (1.0 - self.s * eps) ** 3
         da_deps = dsh_deps * (1.0 - 0.5 * self.gamma0 * eps) - 0.5 * self.gamma0 * self._sigma_h(v)
         return -da_deps / self.v0
+
+    def sound_speed_squared(self, v, e):
+        """As ``AffineEnergyMaterial.sound_speed_squared``, with the same operations
+        inlined for a float volume (the isentrope quadratures call it at every node)."""
+        if not isinstance(v, float):
+            return super().sound_speed_squared(v, e)
+        v0, s, half_gamma = self.v0, self.s, 0.5 * self.gamma0
+        eps = 1.0 - v / v0
+        k = self.rho0 * self.c0**2
+        sigma_h = k * eps / (1.0 - s * eps) ** 2
+        a = sigma_h * (1.0 - half_gamma * eps)
+        dsh_deps = k * (1.0 + s * eps) / (1.0 - s * eps) ** 3
+        a_prime = -(dsh_deps * (1.0 - half_gamma * eps) - half_gamma * sigma_h) / v0
+        b = self.rho0 * self.gamma0
+        slope = a_prime + 0.0 * e - b * (a + b * e)
+        return -v0 * v0 * slope
 
     def _b(self, v):
         return self.rho0 * self.gamma0

@@ -33,6 +33,13 @@ def unit_rule(points: int) -> tuple[np.ndarray, np.ndarray]:
     return 0.5 * (nodes + 1.0), 0.5 * weights
 
 
+@functools.cache
+def unit_rule_lists(points: int) -> tuple[tuple[float, ...], tuple[float, ...]]:
+    """``unit_rule(points)`` as tuples of floats, for short quadratures done with floats."""
+    nodes, weights = unit_rule(points)
+    return tuple(nodes.tolist()), tuple(weights.tolist())
+
+
 def points_for(width: float, singularity_distance: float) -> int:
     """Gauss–Legendre points that integrate an analytic function to rounding on a panel.
 

@@ -30,6 +30,7 @@ momentum jumps; for the isentrope ``g = -int_{v_a}^{v} rho0 C_L dv``.
 
 from __future__ import annotations
 
+import functools
 import math
 
 from .errors import NoSolutionError, StateOutOfRangeError
@@ -91,6 +92,8 @@ class HydrodynamicWaveCurve(StressRange):
         self._last_state: State | None = None
         self._last_point: tuple[float, float, float] | None = None
         self._last_weak: tuple | None = None
+        self._tangent: tuple[float, float, float] | None = None
+        self._last_isentrope: tuple | None = None
         self._integrals = [(ahead.v, 0.0)]
 
     @property
@@ -169,7 +172,7 @@ class HydrodynamicWaveCurve(StressRange):
         # Rounding of the residual: a few ulps of the stresses it subtracts.
         noise_floor = abs(a.sigma)
         if self._on_hugoniot(sigma):
-            offset = mat.hugoniot(a, a.v)[0] - a.sigma
+            offset = self._hugoniot_offset
 
             def residual(v):
                 s, _, ds = mat.hugoniot(a, v)
@@ -187,10 +190,10 @@ class HydrodynamicWaveCurve(StressRange):
                 return (s * scale - sigma,
                         -mat.sound_speed_squared(v, e) * mat.rho0**2 * scale)
         else:
-            offset = mat.isentrope(a, a.v)[0] - a.sigma
+            offset = self._isentrope_offset
 
             def residual(v):
-                s, e = mat.isentrope(a, v)
+                s, e = self._isentrope_point(v)
                 return s - offset - sigma, -mat.sound_speed_squared(v, e) * mat.rho0**2
         if sigma > a.sigma:
             lo, hi = mat.hugoniot_volume_limit(a), a.v
@@ -202,10 +205,19 @@ class HydrodynamicWaveCurve(StressRange):
                 hi = 2.0 * a.v
                 while residual(hi)[0] > 0.0:
                     hi *= 4.0
-        # Acoustic first guess: dv = -(dsigma) / (rho0 C)^2.
-        guess = (a.v - (sigma - a.sigma) / self._impedance**2 if self._impedance > 0.0
-                 else None)
+        # First guess: a Newton step from the last point solved on the same branch (a
+        # root search on the curve evaluates converging stresses), else the acoustic
+        # one, dv = -(dsigma) / (rho0 C)^2.
+        tangent = self._tangent
         noise = 4.0 * _EPS * (abs(sigma) + noise_floor)
+        if tangent is not None and (tangent[0] > a.sigma) == (sigma > a.sigma):
+            guess = tangent[1] + (sigma - tangent[0]) / tangent[2]
+            # nor can the residual be resolved finer than what one ulp of v changes
+            noise += abs(tangent[2]) * math.ulp(guess)
+        elif self._impedance > 0.0:
+            guess = a.v - (sigma - a.sigma) / self._impedance**2
+        else:
+            guess = None
         local = (bracket_near(residual, guess, min(lo, hi), max(lo, hi), noise)
                  if guess is not None else None)
         if local is not None:
@@ -223,7 +235,25 @@ class HydrodynamicWaveCurve(StressRange):
             return 0.0
         if self._on_hugoniot(sigma):
             return self.material.hugoniot(self.ahead, v)[1]
-        return self.material.isentrope(self.ahead, v)[1]
+        return self._isentrope_point(v)[1]
+
+    def _isentrope_point(self, v: float) -> tuple[float, float]:
+        """``(sigma, e)`` on the isentrope of ``ahead`` at ``v``; the last one is kept, as
+        the energy behind a fan is asked at the volume its stress root ended on."""
+        known = self._last_isentrope
+        if known is None or known[0] != v:
+            known = self._last_isentrope = (v, self.material.isentrope(self.ahead, v))
+        return known[1]
+
+    @functools.cached_property
+    def _hugoniot_offset(self) -> float:
+        """The Hugoniot's own stress at ``v_a`` minus the recorded ``sigma_a`` (rounding)."""
+        return self.material.hugoniot(self.ahead, self.ahead.v)[0] - self.ahead.sigma
+
+    @functools.cached_property
+    def _isentrope_offset(self) -> float:
+        """The isentrope's own stress at ``v_a`` minus the recorded ``sigma_a`` (rounding)."""
+        return self.material.isentrope(self.ahead, self.ahead.v)[0] - self.ahead.sigma
 
     def _g_at(self, sigma: float, v: float) -> tuple[float, float]:
         a, mat = self.ahead, self.material
@@ -233,10 +263,18 @@ class HydrodynamicWaveCurve(StressRange):
             jump = (sigma - a.sigma) * (a.v - v)
             g = math.copysign(math.sqrt(max(jump, 0.0)), sigma - a.sigma)
             ds_dv = mat.hugoniot(a, v)[2]
+            self._remember_tangent(sigma, v, ds_dv)
             return g, ((a.v - v) - (sigma - a.sigma) / ds_dv) / (2.0 * g)
         c = mat.sound_speed(v, self._energy(sigma, v))
+        self._remember_tangent(sigma, v, -(mat.rho0 * c) ** 2)
         slope = 1.0 / (mat.rho0 * c) if c > 0.0 else math.inf
         return -self._riemann_integral(v), slope
+
+    def _remember_tangent(self, sigma: float, v: float, slope: float) -> None:
+        """Keep ``(sigma, v, dsigma/dv)`` of a solved point: the next volume root starts
+        one Newton step from it."""
+        if slope < 0.0 and math.isfinite(slope):
+            self._tangent = (sigma, v, slope)
 
     def _is_weak(self, v: float) -> bool:
         """A wave to volume ``v`` so weak (``|v - v_a| <= 1e-5 v_a``) that the stored

@@ -60,6 +60,31 @@ def test_window_of_a_shock_only_impact_is_the_closed_form(flyer_thickness, targe
     assert not window.censored
 
 
+WINDOW_LAYER = LinearElastic("window", rho0=2640.0, C=6600.0)
+
+
+def test_window_stays_open_through_the_first_shocks_own_reflections():
+    """Flyer 2 mm, sample 1 mm, window 4 mm (linear elastic), gauge 0.5 mm into the sample.
+    The first shock's reflection from the sample-window interface reaches the gauge
+    2 (1 - 0.5) mm / C_t after it, and its echoes from the impact face follow: they
+    descend from the first shock and leave the window open.  The flyer's release (its
+    shock reflected from its free back) arrives 2 d_f / C_f after the first shock, long
+    before the window's free rear echoes back (2 x 4 mm / 6600 m/s after entry)."""
+    depth, flyer = 0.5e-3, 2e-3
+    scene = ft.Scene([ft.Layer(FLYER, flyer, velocity=300.0), ft.Layer(TARGET, 1e-3),
+                      ft.Layer(WINDOW_LAYER, 4e-3)], t_end=3e-6,
+                     probes=[ft.Probe("gauge", flyer + depth)])
+    solution = ft.run(scene)
+    times, lineages = solution.arrivals("gauge")
+    reflection = depth / TARGET.C + 2 * (1e-3 - depth) / TARGET.C
+    assert times[1] == pytest.approx(reflection, rel=1e-12) and lineages[1] == lineages[0]
+    window = ft.one_dimensional_window(solution, "gauge")
+    assert window.first_shock == pytest.approx(depth / TARGET.C, rel=1e-12)
+    assert window.duration == pytest.approx(2 * flyer / FLYER.C, rel=1e-12)
+    assert window.duration > 2 * (1e-3 - depth) / TARGET.C  # the old, any-wave answer
+    assert not window.censored
+
+
 def test_thickness_for_window_is_exact_for_shocks():
     scene = impact(1e-3, 4e-3, 1.5e-3)
     thickness = ft.thickness_for_window(scene, "gauge", "0.6 us", layer=0)

@@ -73,6 +73,27 @@ def test_lif_factor_from_the_jump_conditions_at_20_gpa():
     assert ratio > 1.15
 
 
+def test_lif_correction_against_rigg_2014_at_10_and_20_gpa():
+    """The apparent velocity behind a 10 GPa and a 20 GPa shock in LiF, corrected back by
+    the independent fit of Rigg et al., J. Appl. Phys. 116, 033515 (2014), Eq. 16
+    (``u = 0.7895 u_app^0.9918``, km/s, [100] LiF at 1550 nm), gives the true velocity to
+    the spread of the two fits there: 0.2 % at 0.63 km/s, 0.3 % at 1.13 km/s."""
+    for stress, spread in (("10 GPa", 3e-3), ("20 GPa", 4e-3)):
+        velocity = ft.velocity_for(stress, "LiF", ["LiF"])
+        true = ft.match("LiF", velocity, ["LiF"])[1].u
+        apparent = float(LIF.apparent_velocity(true))
+        rigg = 0.7895 * (apparent / 1e3) ** 0.9918 * 1e3
+        assert rigg == pytest.approx(true, rel=spread)
+
+
+def test_lif_index_at_rest_is_the_ambient_index_at_1550_nm():
+    """``a + b`` is the index of LiF at 1550 nm (Li 1976 Sellmeier, computed here)."""
+    lam = 1.55
+    n0 = (1.0 + 0.92549 * lam**2 / (lam**2 - 0.07376**2)
+          + 6.96747 * lam**2 / (lam**2 - 32.790**2)) ** 0.5
+    assert LIF.index(1.0) == pytest.approx(n0, abs=1e-5)
+
+
 def test_window_records_in_json_csv_and_figure(tmp_path):
     scene = tmp_path / "visar.toml"
     scene.write_text('''t_end = "0.5 us"
