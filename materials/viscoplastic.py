@@ -63,7 +63,7 @@ class Viscoplastic:
     """Small-strain elastic–viscoplastic solid (see the module docstring).
 
     ``rho0`` (kg/m^3); ``lam``, ``mu`` Lamé constants (Pa); ``yield_strength`` Y (Pa,
-    >= 0); ``relaxation_time`` tau (s, >= 0, ``math.inf`` for an elastic solid);
+    > 0); ``relaxation_time`` tau (s, >= 0, ``math.inf`` for an elastic solid);
     ``rate_exponent`` n (>= 1).
     """
 
@@ -80,8 +80,9 @@ class Viscoplastic:
         require_number("lambda", self.lam, self.name)
         require_positive("mu", self.mu, self.name)
         y = require_number("yield_strength", self.yield_strength, self.name)
-        if not 0.0 <= y < math.inf:
-            raise MaterialError(f"{self.name}: yield_strength must be finite and >= 0 Pa, "
+        if not 0.0 < y < math.inf:
+            raise MaterialError(f"{self.name}: yield_strength must be finite and > 0 Pa (the "
+                                f"overstress is measured in units of 2Y/3), "
                                 f"got {self.yield_strength!r}")
         tau = require_number("relaxation_time", self.relaxation_time, self.name)
         if not tau >= 0.0:
@@ -126,7 +127,7 @@ class Viscoplastic:
         s = np.asarray(deviator, dtype=float)
         if math.isinf(self.relaxation_time):
             return np.zeros_like(s)
-        over = np.maximum(np.abs(s) / s_y - 1.0, 0.0) if s_y > 0.0 else np.abs(s) * np.inf
+        over = np.maximum(np.abs(s) / s_y - 1.0, 0.0)
         return np.sign(s) * s_y / (2.0 * self.mu * self.relaxation_time) * over**self.rate_exponent
 
     def implicit_rate(self, s0, k):
