@@ -77,8 +77,10 @@ Loading with linear hardening is convex beyond the knee too (a Mie–Grüneisen
 Hugoniot plus a linear term), so precursor + plastic shock is again the whole
 hull.  A hardening law that saturates makes the plastic branch concave just
 beyond the HEL; ``concave_hull_waves`` shows the convex-hull construction that
-then gives a shock–fan–shock wave (tested on a ``Gamma0 = 0`` solid, where the
-stress is a function of the strain alone and the construction is exact).
+then gives a shock–fan–shock wave on samples, and ``materials.hull.HullWaveCurve``
+is that construction as a wave curve the engine runs (``materials.saturating_plastic``:
+a ``Gamma0 = 0`` solid, where the stress is a function of the strain alone and the
+construction is exact).
 
 Engine fans
 -----------

@@ -39,6 +39,12 @@ Models and fields (``MODELS``):
   ``crush_scale`` (Pa, exponential), and ``spall_strength``.  Without a crush curve
   every compression compacts fully (the strong-shock model of Davison §11.2).
 
+- ``"saturating-plastic"``: the elastic–plastic solid with saturating (Voce) hardening
+  of ``materials.saturating_plastic``, whose waves come from the hull construction:
+  ``rho0``, ``c0``, ``s`` (a ``Gamma0 = 0`` pressure), ``shear_modulus``,
+  ``yield_strength``, ``saturation_strength`` (Pa) and ``saturation_strain``; optional
+  ``spall_strength``.
+
 - ``"phase-change"``: the two-phase solid of ``materials.phase_change``: ``rho0``,
   ``c1``, ``s1`` (low-pressure phase), ``c2``, ``s2`` (high-pressure phase),
   ``transition_stress`` (Pa) and ``transition_strain``; optional ``spall_strength``.
@@ -78,6 +84,7 @@ from .linear_elastic import LinearElastic
 from .mie_gruneisen import MieGruneisen
 from .phase_change import PhaseChangeSolid
 from .porous import PorousSolid
+from .saturating_plastic import SaturatingPlastic
 
 MODELS: dict[str, dict[str, tuple[str, ...]]] = {
     "mie-gruneisen": {"required": ("rho0", "c0", "s", "gamma0"),
@@ -91,6 +98,9 @@ MODELS: dict[str, dict[str, tuple[str, ...]]] = {
     "finite-plastic": {"required": ("rho0", "c0", "s", "gamma0", "yield_strength"),
                        "optional": ("shear_modulus", "poisson", "hardening",
                                     "spall_strength")},
+    "saturating-plastic": {"required": ("rho0", "c0", "s", "shear_modulus", "yield_strength",
+                                        "saturation_strength", "saturation_strain"),
+                           "optional": ("spall_strength",)},
     "phase-change": {"required": ("rho0", "c1", "s1", "c2", "s2", "transition_stress",
                                   "transition_strain"),
                      "optional": ("spall_strength",)},
@@ -117,6 +127,7 @@ FIELD_DIMENSIONS: dict[str, str] = {
     "crush_exponent": "dimensionless", "crush_scale": "stress", "c1": "velocity",
     "s1": "dimensionless", "c2": "velocity", "s2": "dimensionless",
     "transition_stress": "stress", "transition_strain": "dimensionless",
+    "saturation_strength": "stress", "saturation_strain": "dimensionless",
 }
 """Physical dimension of every numeric specification field, for readers of files
 that write quantities with units (the dimension names of ``fronttrack.units``)."""
@@ -356,6 +367,11 @@ def material_from_spec(name: str, spec: dict[str, Any]) -> Material:
         return _finite_plastic(name, values)
     if model == "porous":
         return _porous(name, values)
+    if model == "saturating-plastic":
+        return SaturatingPlastic(name, values["rho0"], values["c0"], values["s"],
+                                 values["shear_modulus"], values["yield_strength"],
+                                 values["saturation_strength"], values["saturation_strain"],
+                                 spall_strength=values.get("spall_strength", math.inf))
     if model == "phase-change":
         return PhaseChangeSolid(name, values["rho0"], values["c1"], values["s1"], values["c2"],
                                 values["s2"], values["transition_stress"],
