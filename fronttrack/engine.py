@@ -22,7 +22,6 @@ state is constant; every queue entry is either valid or detectably stale.
 
 from __future__ import annotations
 
-import bisect
 import dataclasses
 import heapq
 import itertools
@@ -36,7 +35,7 @@ from . import interactions, outgoing, spall, zones
 from .counters import Counters
 from .fronts import UNKNOWN, Front, Region, inside_fan
 from .kinds import FrontKind, Release
-from .resolution import Resolution, contact_energy_budget, initial_state, resolve
+from .resolution import Resolution, initial_state, resolve
 from .scene import Scene
 from .solution import EventRecord, Solution
 
@@ -85,9 +84,6 @@ class Engine:
         self.t_end = scene.t_end
         self.initial_states = [initial_state(layer) for layer in scene.layers]
         self.resolution: Resolution = resolve(scene, self.initial_states)
-        self.contact_energy_budget = contact_energy_budget(scene, self.initial_states,
-                                                           self.resolution)
-        self.layer_edges = list(itertools.accumulate(layer.thickness for layer in scene.layers))
         self.tables = IsentropeTables(self.resolution.negligible)
         self.signal_speed = signal_speed(scene, self.resolution.stress_scale)
         self.head: Front | None = None
@@ -435,10 +431,8 @@ class Engine:
         heat = material.rho0 * abs(left.e - right.e) / res.stress_scale
         keep = self.acc.entropy_contacts and max(jump, heat) > ENTROPY_JUMP_TOLERANCE
         if keep and res.negligible > 0.0 and math.isfinite(left.v + right.v):
-            heat = material.rho0 * abs(left.e - right.e)  # J/m^3
             keep = (material.contact_reflection(left, right, res.stress_scale) > res.negligible
-                    or heat > res.negligible
-                    or heat * self._layer_thickness(x) > self.contact_energy_budget)
+                    or material.rho0 * abs(left.e - right.e) > res.negligible)
         if keep and _contact_within(group, x, self.acc.contact_resolution):
             keep = False
             counters.unresolved_contacts += 1
@@ -447,11 +441,6 @@ class Engine:
         counters.neglected_entropy = max(counters.neglected_entropy, jump)
         counters.neglected_contacts += jump > ENTROPY_JUMP_TOLERANCE
         return None
-
-    def _layer_thickness(self, x: float) -> float:
-        """Thickness (m) of the layer holding the point ``X = x`` (the first at an edge)."""
-        index = min(bisect.bisect_left(self.layer_edges, x), len(self.layer_edges) - 1)
-        return self.scene.layers[index].thickness
 
     def _neglected_contact_state(self, left: State, right: State, material, left_specs,
                                  right_specs) -> State:

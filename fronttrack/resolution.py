@@ -101,37 +101,6 @@ class Resolution:
         }
 
 
-CONTACT_ENERGY_SHARE = 0.1
-"""Share of the promised energy balance one neglected entropy contact may cost at most."""
-
-
-def contact_energy_budget(scene: Scene, states: list[State], resolution: Resolution) -> float:
-    """Largest ``rho0 |e_L - e_R| L`` (J/m^2) of an entropy contact that may be neglected.
-
-    An entropy contact left untracked puts the states on its two sides into one region,
-    and every wave that later sweeps that region moves material across the energy jump:
-    over a layer of thickness ``L`` that is up to ``rho0 |e_L - e_R| L`` per unit area,
-    created or lost depending on the direction of the sweep, for as long as the wave
-    runs (a ray overtaking a decaying shock leaves such a jump beside it).  The budget is
-    ``CONTACT_ENERGY_SHARE`` of the balance the settings promise
-    (``2 stress_tolerance / stress_scale``, ``fronttrack.balance``) times the scene's
-    energy: the layers' initial kinetic and internal energy, plus, when a boundary drives
-    the stack, the strain energy of the stress scale over its length.
-    """
-    energy = sum(layer.material.rho0 * layer.thickness * (s.e + 0.5 * s.u * s.u)
-                 for layer, s in zip(scene.layers, states, strict=True)
-                 if math.isfinite(s.v) and math.isfinite(s.e))
-    for boundary, layer, s in ((scene.left, scene.layers[0], states[0]),
-                               (scene.right, scene.layers[-1], states[-1])):
-        if boundary.kind in (BoundaryKind.VELOCITY, BoundaryKind.STRESS) and math.isfinite(s.v):
-            modulus = layer.material.rho0 * layer.material.sound_speed(s.v, s.e) ** 2
-            if modulus > 0.0:
-                energy += resolution.stress_scale ** 2 / (2.0 * modulus) * scene.length
-    promise = 2.0 * resolution.stress_tolerance / resolution.stress_scale \
-        if resolution.stress_scale > 0.0 else 0.0
-    return CONTACT_ENERGY_SHARE * promise * abs(energy)
-
-
 def initial_state(layer) -> State:
     """A layer's initial state: its stress reached along its wave curve, moving at ``velocity``."""
     if layer.initial is not None:
