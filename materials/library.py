@@ -72,12 +72,14 @@ from typing import Any
 from .base import Material, require_positive
 from .elastic_plastic import ElasticPlastic
 from .errors import MaterialError
+from .explosive import Explosive
 from .finite_plastic import FinitePlastic
 from .ideal_gas import IdealGas
 from .linear_elastic import LinearElastic
 from .mie_gruneisen import MieGruneisen
 from .phase_change import PhaseChangeSolid
 from .porous import PorousSolid
+from .products import Products
 
 MODELS: dict[str, dict[str, tuple[str, ...]]] = {
     "mie-gruneisen": {"required": ("rho0", "c0", "s", "gamma0"),
@@ -94,6 +96,11 @@ MODELS: dict[str, dict[str, tuple[str, ...]]] = {
     "phase-change": {"required": ("rho0", "c1", "s1", "c2", "s2", "transition_stress",
                                   "transition_strain"),
                      "optional": ("spall_strength",)},
+    "explosive-jwl": {"required": ("rho0", "c0", "s", "gamma0", "A", "B", "R1", "R2",
+                                   "omega", "E0"),
+                      "optional": ("D_cj", "p_cj")},
+    "explosive-gamma": {"required": ("rho0", "c0", "s", "gamma0", "gamma", "q"),
+                        "optional": ("D_cj", "p_cj")},
     "porous": {"required": ("solid_rho0", "c0", "s", "gamma0", "alpha0"),
                "optional": ("crush_stress", "compaction_stress", "crush_exponent",
                             "crush_scale", "spall_strength")},
@@ -117,6 +124,9 @@ FIELD_DIMENSIONS: dict[str, str] = {
     "crush_exponent": "dimensionless", "crush_scale": "stress", "c1": "velocity",
     "s1": "dimensionless", "c2": "velocity", "s2": "dimensionless",
     "transition_stress": "stress", "transition_strain": "dimensionless",
+    "A": "stress", "B": "stress", "R1": "dimensionless", "R2": "dimensionless",
+    "omega": "dimensionless", "E0": "stress", "q": "specific_energy", "D_cj": "velocity",
+    "p_cj": "stress",
 }
 """Physical dimension of every numeric specification field, for readers of files
 that write quantities with units (the dimension names of ``fronttrack.units``)."""
@@ -132,7 +142,7 @@ LIBRARY_FIELD = "library"
 
 
 # --- the library file ----------------------------------------------------------------
-DATA_FILES = ("library.toml", "porous.toml", "phase_change.toml")
+DATA_FILES = ("library.toml", "porous.toml", "phase_change.toml", "explosives.toml")
 """The library's data files, read in this order."""
 
 
@@ -356,6 +366,8 @@ def material_from_spec(name: str, spec: dict[str, Any]) -> Material:
         return _finite_plastic(name, values)
     if model == "porous":
         return _porous(name, values)
+    if model in ("explosive-jwl", "explosive-gamma"):
+        return _explosive(name, model, values)
     if model == "phase-change":
         return PhaseChangeSolid(name, values["rho0"], values["c1"], values["s1"], values["c2"],
                                 values["s2"], values["transition_stress"],
@@ -438,6 +450,21 @@ def _porous(name: str, values: dict[str, float]) -> PorousSolid:
                        crush_exponent=values.get("crush_exponent", 2.0),
                        crush_scale=values.get("crush_scale"),
                        spall_strength=values.get("spall_strength", math.inf))
+
+
+def _explosive(name: str, model: str, values: dict[str, float]) -> Explosive:
+    """An explosive: its unreacted Mie-Gruneisen solid and JWL or gamma-law products."""
+    rho0 = values["rho0"]
+    unreacted = MieGruneisen(f"{name} (unreacted)", rho0, values["c0"], values["s"],
+                             values["gamma0"])
+    if model == "explosive-gamma":
+        products = Products.gamma_law(f"{name} products", rho0, values["gamma"], values["q"])
+    else:
+        products = Products(f"{name} products", rho0, require_positive("E0", values["E0"], name)
+                            / rho0, values["omega"], A=values["A"], B=values["B"],
+                            R1=values["R1"], R2=values["R2"])
+    return Explosive(name, unreacted, products, D_cj=values.get("D_cj"),
+                     p_cj=values.get("p_cj"))
 
 
 def _number(name: str, field: str, value: Any) -> float:
