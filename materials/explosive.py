@@ -65,8 +65,9 @@ BURNT = 1.0
 
 
 def is_burnt(state: State) -> bool:
-    """Whether ``state`` is a products state of an explosive."""
-    return state.plastic_strain == BURNT
+    """Whether ``state`` is a products state of an explosive (the flag survives the
+    engine's weighted means of two products states, which may round it by an ulp)."""
+    return state.plastic_strain > 0.5 * BURNT
 
 
 def burnt(state: State) -> State:
@@ -354,7 +355,10 @@ class DetonationCurve(StressRange):
         a, d = self.ahead, self.direction
         if sigma < self.cj.state.sigma:
             front = Shock(ahead=a, behind=self.cj_state, speed=d * self.cj.speed, direction=d)
-            return (front, *self.fan.waves(sigma))
+            (fan,) = self.fan.waves(sigma)
+            # the Taylor wave's head is sonic, C_L(CJ) = D: equal, not an ulp faster, so that
+            # it never overtakes the detonation
+            return (front, dataclasses.replace(fan, head_speed=front.speed))
         behind = self.state_at(sigma)
         speed = (behind.sigma - a.sigma) / (self.material.rho0 * (behind.u - a.u))
         return (Shock(ahead=a, behind=behind, speed=speed, direction=d),)
