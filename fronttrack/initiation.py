@@ -45,10 +45,10 @@ def parse(value, where: str = "layer.initiate") -> Initiation | None:
     if not isinstance(value, str):
         raise SceneError(f"{where}: expected \"left\", \"right\" or a time, got {value!r}")
     words = value.split(maxsplit=1)
-    side = "left"
+    side, rest = "left", value.strip()
     if words and words[0] in SIDES:
-        side, words = words[0], words[1:]
-    time = to_si(words[0], "time", where) if words else 0.0
+        side, rest = words[0], words[1] if len(words) > 1 else ""
+    time = to_si(rest, "time", where) if rest else 0.0
     return _checked(Initiation(side, time), where)
 
 

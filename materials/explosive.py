@@ -64,6 +64,11 @@ BURNT = 1.0
 """``State.plastic_strain`` of detonation products (unreacted explosive: 0)."""
 
 
+HEAD_LAG = 1e-12
+"""Relative amount by which the Taylor wave's head characteristic is slower than the CJ
+detonation it follows (equal in exact arithmetic)."""
+
+
 def is_burnt(state: State) -> bool:
     """Whether ``state`` is a products state of an explosive (the flag survives the
     engine's weighted means of two products states, which may round it by an ulp)."""
@@ -356,9 +361,10 @@ class DetonationCurve(StressRange):
         if sigma < self.cj.state.sigma:
             front = Shock(ahead=a, behind=self.cj_state, speed=d * self.cj.speed, direction=d)
             (fan,) = self.fan.waves(sigma)
-            # the Taylor wave's head is sonic, C_L(CJ) = D: equal, not an ulp faster, so that
-            # it never overtakes the detonation
-            return (front, dataclasses.replace(fan, head_speed=front.speed))
+            # the Taylor wave's head is sonic, C_L(CJ) = D; it is given a speed a hair
+            # (HEAD_LAG) below D, never an ulp above, so that it never overtakes the
+            # detonation and the CJ cell between them keeps its place in X
+            return (front, dataclasses.replace(fan, head_speed=front.speed * (1.0 - HEAD_LAG)))
         behind = self.state_at(sigma)
         speed = (behind.sigma - a.sigma) / (self.material.rho0 * (behind.u - a.u))
         return (Shock(ahead=a, behind=behind, speed=speed, direction=d),)
