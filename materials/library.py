@@ -39,6 +39,13 @@ Models and fields (``MODELS``):
   ``crush_scale`` (Pa, exponential), and ``spall_strength``.  Without a crush curve
   every compression compacts fully (the strong-shock model of Davison §11.2).
 
+- ``"explosive-jwl"`` and ``"explosive-gamma"``: an explosive of ``materials.explosive``:
+  the unreacted Mie–Grüneisen solid (``rho0``, ``c0``, ``s``, ``gamma0``) and its
+  detonation products, JWL (``A``, ``B`` in Pa, ``R1``, ``R2``, ``omega``, ``E0`` the
+  detonation energy per unit initial volume in Pa) or gamma law (``gamma``, ``q`` the heat
+  of detonation in J/kg); optional ``D_cj``, ``p_cj`` (tabulated, for reports).
+  ``materials/data/explosives.toml`` holds the library's explosives.
+
 - ``"phase-change"``: the two-phase solid of ``materials.phase_change``: ``rho0``,
   ``c1``, ``s1`` (low-pressure phase), ``c2``, ``s2`` (high-pressure phase),
   ``transition_stress`` (Pa) and ``transition_strain``; optional ``spall_strength``.
@@ -269,6 +276,15 @@ def listing() -> str:
         e = _library()[name]
         lines.append(f"{name:<12} {e['rho0']:>10.0f}  phase change at "
                      f"{e['transition_stress'] / 1e9:.4g} GPa; {e.get('source', '')}")
+    explosives = available("explosive-jwl") + available("explosive-gamma")
+    if explosives:
+        lines.append(f"{'explosive':<12} {'rho0 kg/m3':>10} {'D_CJ m/s':>8} {'p_CJ GPa':>8}  "
+                     f"(CJ point of the products' equation of state); source")
+        for name in explosives:
+            explosive = get(name)
+            cj = explosive.cj_state(explosive.reference_state())
+            lines.append(f"{name:<12} {explosive.rho0:>10.0f} {cj.speed:>8.0f} "
+                         f"{cj.state.sigma / 1e9:>8.2f}  {_library()[name].get('source', '')}")
     lines.append("Names and aliases match without regard to case.  G and Y (yield stress; from "
                  "the HEL where the entry gives one) let a scene use an entry as "
                  "model = \"elastic-plastic\" or \"finite-plastic\" (library = \"NAME\").")

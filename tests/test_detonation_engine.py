@@ -140,3 +140,27 @@ def test_bad_detonators():
         ft.Scene([ft.Layer("TNT", "1 mm", initiate="2 us")], t_end="1 us").validate()
     with pytest.raises(ft.SceneError, match=r"initiate"):
         ft.Layer("TNT", "1 mm", initiate="middle")
+
+
+def test_scene_file_detonator(tmp_path):
+    path = tmp_path / "charge.toml"
+    path.write_text('t_end = "0.5 us"\n[[layer]]\nmaterial = "PBX9501"\nthickness = "3 mm"\n'
+                    'initiate = "left"\n[[layer]]\nmaterial = "Cu"\nthickness = "1 mm"\n'
+                    '[left]\nkind = "wall"\n')
+    scene = ft.load_scene(path)
+    assert scene.layers[0].initiate.side == "left" and scene.layers[0].initiate.time == 0.0
+    bad = tmp_path / "late.toml"
+    bad.write_text('t_end = "0.5 us"\n[[layer]]\nmaterial = "PBX9501"\nthickness = "3 mm"\n'
+                   'initiate = "1 us"\n')
+    with pytest.raises(ft.SceneError, match=r"layer\[0\]\.initiate"):
+        ft.load_scene(bad).validate()
+
+
+def test_cli_match_detonation(capsys):
+    from fronttrack.cli import main
+
+    assert main(["match", "PBX9501", "detonation", "Cu"]) == 0
+    out = capsys.readouterr().out
+    assert "detonation" in out and "37.00" in out
+    assert main(["match", "Cu", "detonation", "Al6061"]) == 2
+    assert "not an explosive" in capsys.readouterr().err
