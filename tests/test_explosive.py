@@ -298,3 +298,27 @@ def test_prestressed_explosive_is_refused():
 def test_state_flag():
     state = State(1.0, 0.0, 1.0, 0.0)
     assert library.get("TNT").phase(state) is library.get("TNT").unreacted
+
+
+# --- the ZND profile ------------------------------------------------------------------------------
+def test_znd_profile_from_spike_to_cj():
+    """Spike: the unreacted Hugoniot Us = c0 + s up at Us = D (up = (D - c0)/s, sigma = rho0
+    D up); end: the CJ point; every state on the Rayleigh line; the pressure falls and the
+    reaction completes at D 2/k behind the front."""
+    from materials.znd import znd_profile
+
+    m = library.get("PBX9501")
+    k = 1e8
+    profile = znd_profile(m, k, points=101)
+    d = profile.speed
+    un = m.unreacted
+    assert profile.sigma[0] == pytest.approx(m.rho0 * d * (d - un.c0) / un.s, rel=1e-12)
+    cj = m.cj_state(m.reference_state())
+    assert profile.sigma[-1] == pytest.approx(cj.state.sigma, rel=1e-12)
+    rayleigh = m.rho0**2 * d**2 * (m.v0 - profile.v)
+    assert np.allclose(profile.sigma, rayleigh, rtol=1e-12, atol=0.0)
+    assert np.all(np.diff(profile.sigma) < 0.0)
+    assert np.all(np.diff(profile.reacted) > 0.0)
+    assert profile.distance[-1] == pytest.approx(2.0 * d / k, rel=1e-12)
+    with pytest.raises(MaterialError, match="rate"):
+        znd_profile(m, 0.0)
