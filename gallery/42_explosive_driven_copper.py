@@ -60,7 +60,7 @@ def main() -> None:
         f"products behind it expand to vacuum through the charge's free face. At the end "
         f"of the run the plate moves at {final:.0f} m/s against the Gurney estimate "
         f"{gurney:.0f} m/s for M/C = {ratio:.2f} (Gurney's linear-velocity model claims a "
-        f"few per cent). Characteristic step 3 GPa; the products have no lattice, every "
+        f"few per cent). Characteristic step 5 GPa; the products have no lattice, every "
         f"crossing of their rays is a Riemann problem."), y=0.02)
     common.save(figure, NAME, f"PBX 9501 driving 2 mm Cu: free surface rings up to "
                 f"{final:.0f} m/s, Gurney {gurney:.0f} m/s (open-faced sandwich).")

@@ -21,7 +21,7 @@ def main() -> None:
     charge, plate = solution.scene.layers
     g, mm, us = common.GPA, common.MM, common.US
     figure, ax_xt, ax_record = common.xt_record_figure(
-        solution, "Explosive loading of aluminium 6061 (Comp B, 4 mm, on 8 mm): peaked "
+        solution, "Explosive loading of aluminium 6061 (Comp B, 3 mm, on 6 mm): peaked "
                   "pulse and spall", numbers=False)
     station = charge.thickness + 0.25 * plate.thickness
     history = solution.history(station)
@@ -57,7 +57,7 @@ def main() -> None:
         f"decay at once behind its front (blue record, a quarter of the way into the "
         f"plate). The pulse reflects from the free rear face as a release; where it meets "
         f"the falling tail of the incoming pulse the tension reaches the spall strength: "
-        f"{where}. Characteristic step 1.5 GPa; the reaction zone is infinitely thin."),
+        f"{where}. Characteristic step 3 GPa; the reaction zone is infinitely thin."),
         y=0.02)
     common.save(figure, NAME, f"Comp B on aluminium 6061: a {peak * g:.1f} GPa peaked, "
                 f"decaying pulse and spall near the rear face.")
