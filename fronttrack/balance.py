@@ -12,7 +12,9 @@ characteristic step; waves weaker than the negligible stress are dropped, and th
 stress mismatch each one leaves behind acts as a small force until the next wave
 passes.  The residuals are reported relative to a scale that cannot vanish: momentum
 against the momentum content ``sum m |u|`` (plates moving towards each other carry
-almost no net momentum), energy against the largest of the energies and the work.
+almost no net momentum), energy against the energy content ``sum m (|e| + u^2/2)`` or
+the work, the larger (an explosive's total energy stays zero while its heat of
+detonation, carried as ``e = -q`` by the products, turns into motion and heat).
 
 The settings promise a balance within ``BALANCE_FACTOR`` times the larger of the
 record tolerance and the estimated record error, as fractions of the stress scale (a
