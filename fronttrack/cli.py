@@ -35,7 +35,7 @@ from .cli_exports import (
     write_window_records,
 )
 from .cli_sweep import add_sweep_command
-from .impedance_match import format_table, impedance_match, to_json_dict
+from .impedance_match import detonation_match, format_table, impedance_match, to_json_dict
 from .outputs import OutputSet, check_output_dir, check_output_file
 from .runner import run
 from .scene_file import load_scene
@@ -108,7 +108,8 @@ def _parser() -> argparse.ArgumentParser:
 
     match = commands.add_parser("match", help="impedance match a flyer onto a stack")
     match.add_argument("flyer", help="flyer material (library name)")
-    match.add_argument("velocity", help='impact velocity with units, e.g. "1000 m/s"')
+    match.add_argument("velocity", help='impact velocity with units, e.g. "1000 m/s", or '
+                       '"detonation" when the flyer is an explosive (its CJ detonation)')
     match.add_argument("layers", nargs="+", help="target layers, first struck first")
     match.add_argument("--json", type=Path, default=None, help="write the states as JSON")
     match.add_argument("--release", choices=("isentrope", "hugoniot"), default="isentrope",
@@ -171,9 +172,13 @@ def _match(args) -> int:
     if args.json is not None:
         check_output_file(args.json, "--json")
     flyer = library.get(args.flyer)
-    velocity = parse_quantity(args.velocity, "velocity", "velocity")
     stack = [library.get(name) for name in args.layers]
-    rows = impedance_match(flyer, velocity, stack, release=args.release, mirrored=args.mirrored)
+    if args.velocity == "detonation":  # an explosive's CJ detonation drives the stack
+        rows = detonation_match(flyer, stack, release=args.release, mirrored=args.mirrored)
+    else:
+        velocity = parse_quantity(args.velocity, "velocity", "velocity")
+        rows = impedance_match(flyer, velocity, stack, release=args.release,
+                               mirrored=args.mirrored)
     print(format_table(rows))
     if args.json is not None:
         with OutputSet() as outputs:

@@ -31,7 +31,7 @@ import time
 from characteristics.isentrope import IsentropeTables
 from materials import State, WavediagramError
 
-from . import interactions, outgoing, spall, zones
+from . import initiation, interactions, outgoing, spall, zones
 from .counters import Counters
 from .fronts import UNKNOWN, Front, Region, inside_fan
 from .kinds import FrontKind, Release
@@ -157,6 +157,7 @@ class Engine:
         self.head = left
         for front in fronts:
             self.push_site(front, 0.0)
+        initiation.schedule(self, fronts)
         criterion = scene.spall_criterion
         for x, t in self.fractures:
             spall.schedule_point(self, x, t, criterion.threshold)

@@ -169,7 +169,42 @@ def impedance_match(flyer: Material, velocity: float, stack: list[Material],
     impact = solve_contact(flyer, flyer.reference_state(u=float(velocity)),
                            stack[0], stack[0].reference_state(), release=release)
     rows = [_row("flyer", flyer, impact.left_star, impact.left_waves, None, EXACT)]
-    state, transmitted = impact.right_star, impact.right_waves
+    return rows + _through(impact.right_star, impact.right_waves, stack, release, mirrored)
+
+
+def detonation_match(explosive: Material | str, stack: list[Material | str],
+                     release: str = "isentrope", mirrored: bool = False) -> list[MatchRow]:
+    """The CJ detonation of ``explosive`` arriving at a stack (``wavediagram match PBX9501
+    detonation Cu``): the first row is the explosive's CJ state behind its detonation
+    (``shock_speed`` is D_CJ) with the wave the first layer reflects into the products;
+    then one row per layer as ``impedance_match``.  The Taylor wave behind the CJ point
+    is not part of this first-shock estimate: the first layer's state is the peak of the
+    pulse it receives.
+    """
+    explosive = _as_material(explosive, "explosive")
+    if not hasattr(explosive, "cj_state"):
+        raise MatchError(f"flyer: {explosive.name} is not an explosive; \"detonation\" needs "
+                         f"one (wavediagram materials lists them)")
+    if isinstance(stack, (str, Material)):
+        stack = [stack]
+    if not stack:
+        raise MatchError("layers: the stack needs at least one layer")
+    stack = [_as_material(m, f"stack[{k}]") for k, m in enumerate(stack)]
+    rest = explosive.reference_state()
+    cj = explosive.cj_state(rest)
+    front = Shock(ahead=rest, behind=cj.state, speed=cj.speed, direction=1)
+    arrival = solve_contact(explosive, cj.state, stack[0], stack[0].reference_state(),
+                            release=release)
+    rows = [_row("detonation", explosive, cj.state, (front,), _reflection(explosive, arrival),
+                 EXACT)]
+    return rows + _through(arrival.right_star, arrival.right_waves, stack, release, mirrored)
+
+
+def _through(state: State, transmitted: tuple, stack: list[Material], release: str,
+             mirrored: bool) -> list[MatchRow]:
+    """One row per layer: the shock ``transmitted`` into the first layer (behind it
+    ``state``) followed through the stack."""
+    rows = []
     for k, material in enumerate(stack):
         reflected = None
         next_state, next_transmitted = state, transmitted

@@ -27,7 +27,7 @@ import math
 
 from materials import NoSolutionError, RiemannSolution, solve_boundary, solve_contact
 
-from . import spall
+from . import initiation, spall
 from .fronts import Front
 from .kinds import BoundaryKind, EventKind, FrontKind
 
@@ -51,6 +51,9 @@ def contact_strength(engine, site: Front | None, material) -> float:
 def solve(engine, site, region_left, region_right, t, x, incoming, timer):
     """Riemann problem at the event; returns ``(kind, solution, new_site)``."""
     release = engine.resolution.release
+    lit = initiation.solve(engine, site, region_left, region_right, t, timer)
+    if lit is not None:
+        return (*lit, None)
     if site is not None and site.kind == FrontKind.BOUNDARY:
         kind, sol = _boundary(engine, site, region_left, region_right, t, incoming, timer)
         return kind, sol, None

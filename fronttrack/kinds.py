@@ -52,6 +52,7 @@ class EventKind(StrEnum):
     SPALL = "spall"
     LATTICE = "lattice"
     SHOCK_FORMATION = "shock-formation"
+    INITIATION = "initiation"
 
 
 class BoundaryKind(StrEnum):

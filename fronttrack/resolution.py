@@ -209,6 +209,9 @@ def stress_scale(scene: Scene, states: list[State]) -> float:
             elif spec.kind == BoundaryKind.VELOCITY:
                 sol = solve_boundary(material, state, side, velocity=value, release=release)
                 scale = max(scale, abs(sol.bonded_sigma))
+    for layer, s in zip(layers, states, strict=True):
+        if hasattr(layer.material, "cj_state"):  # an explosive can detonate: its CJ stress
+            scale = max(scale, layer.material.cj_state(s).state.sigma)
     if scale == 0.0:
         scale = max(layer.material.rho0 * layer.material.sound_speed(s.v, s.e)
                     for layer, s in zip(layers, states, strict=True))

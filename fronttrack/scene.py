@@ -20,7 +20,9 @@ from dataclasses import dataclass, field
 from materials import Material, MaterialError, State, StateOutOfRangeError
 from materials.library import get as library_material
 
+from . import initiation
 from .errors import SceneError, located
+from .initiation import Initiation
 from .units import to_si
 from .windows import OpticalWindow, optical_window
 
@@ -64,7 +66,9 @@ class Layer:
     isentrope if tensile).  ``initial``, if given, is the exact initial state
     (``State`` with stress, velocity, volume and energy) and replaces
     ``velocity`` and ``stress``: a gas at a given density and pressure, or a
-    layer already shocked.
+    layer already shocked.  ``initiate`` puts a detonator on an explosive layer:
+    ``"left"`` or ``"right"`` (the face), a time (``"1 us"``: the left face then), or both
+    (``"right 0.5 us"``); see ``fronttrack.initiation``.
     """
 
     material: Material | str
@@ -74,6 +78,7 @@ class Layer:
     bond: str = "bonded"
     name: str = ""
     initial: State | None = None
+    initiate: Initiation | str | float | None = None
 
     def __post_init__(self) -> None:
         _set(self, "material", _material("layer.material", self.material))
@@ -88,6 +93,7 @@ class Layer:
             raise SceneError(f"layer.name: expected a string, got {self.name!r}")
         if self.initial is not None:
             _check_initial_state(self.material, self.initial)
+        _set(self, "initiate", initiation.parse(self.initiate))
 
 
 def _check_initial_state(material: Material, state: State) -> None:
@@ -411,6 +417,7 @@ class Scene:
                 raise SceneError(f"probe.name: duplicate probe name {probe.name!r}")
             names.add(probe.name)
             self._check_probe(probe)
+        initiation.check(self)
         return self
 
     def _check_probe(self, probe: Probe) -> None:

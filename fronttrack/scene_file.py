@@ -77,7 +77,7 @@ from .units import parse_quantity
 _TOP_KEYS = ("title", "t_end", "accuracy", "materials", "layer", "left", "right", "probe",
              "spall")
 _LAYER_KEYS = ("material", "thickness", "velocity", "stress", "name", "bond", "pressure",
-               "density", "temperature")
+               "density", "temperature", "initiate")
 _GAS_KEYS = ("pressure", "density", "temperature")
 """Keys that give a gas layer its state (a gas is given a state, not loaded into one)."""
 _BOUNDARY_KEYS = ("kind", "value", "history", "bond")
@@ -308,6 +308,7 @@ def _layer(table: dict[str, Any], index: int, inline: dict[str, Material]) -> La
         bond=bond,
         name=_string(table, "name", f"{path}.name", ""),
         initial=_gas_state(table, path, material, stress, velocity),
+        initiate=table.get("initiate"),
     )
 
 

@@ -614,24 +614,26 @@ class Solution:
         the totals at 0 and ``t``, the boundary impulse and work, and the residuals
         ``momentum_error`` and ``energy_error`` (absolute) with their relative sizes:
         momentum against the largest of the momentum content ``sum m |u|`` at 0 and
-        ``t`` and the impulse, energy against the largest of the energies and the work.
+        ``t`` and the impulse, energy against the largest of the energy content ``sum m
+        (|e| + u^2/2)`` at 0 and ``t`` and the work (``energy_scale``).
         """
         t = self.scene.t_end if t is None else t
 
         def totals(pieces):
-            p = e = content = 0.0
+            p = e = content = energy_content = 0.0
             for mass, s in pieces:
                 p += mass * s.u
                 content += mass * abs(s.u)
                 e += mass * (s.e + 0.5 * s.u * s.u)
-            return p, e, content
+                energy_content += mass * (abs(s.e) + 0.5 * s.u * s.u)
+            return p, e, content, energy_content
 
-        p0, e0, content0 = totals((layer.material.rho0 * layer.thickness, state)
+        p0, e0, content0, energy0 = totals((layer.material.rho0 * layer.thickness, state)
                         for layer, state in zip(self.scene.layers, self.initial_states,
                                                 strict=True))
         cells = [(self._material_of(rid).rho0 * (x1 - x0), self._region_state(rid))
                  for x0, x1, rid in self._cell_ids_at(t)]
-        p1, e1, content1 = totals(cells)
+        p1, e1, content1, energy1 = totals(cells)
         left, right = self.cell_history("left"), self.cell_history("right")
         impulse = left.integral(left.sigma, t) - right.integral(right.sigma, t)
         work = (left.integral(left.sigma * left.u, t)
@@ -639,7 +641,9 @@ class Solution:
         # momentum is measured against its content (sum of mass |u|): plates moving
         # towards each other can carry almost no net momentum
         kinetic_scale = max(content0, content1, abs(impulse), 1e-300)
-        energy_scale = max(abs(e0), abs(e1), abs(work), 1e-300)
+        # energy against its content (sum of mass (|e| + u^2/2)): an explosive's total
+        # energy stays zero while the heat of detonation turns into motion and heat
+        energy_scale = max(energy0, energy1, abs(work), 1e-300)
         return {
             "t": t,
             "momentum": (p0, p1), "impulse": impulse,
@@ -648,6 +652,7 @@ class Solution:
             "energy": (e0, e1), "work": work,
             "energy_error": e1 - e0 - work,
             "energy_relative_error": abs(e1 - e0 - work) / energy_scale,
+            "energy_scale": energy_scale,
             "mass": sum(m for m, _ in cells),
         }
 

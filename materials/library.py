@@ -44,6 +44,12 @@ Models and fields (``MODELS``):
   ``rho0``, ``c0``, ``s`` (a ``Gamma0 = 0`` pressure), ``shear_modulus``,
   ``yield_strength``, ``saturation_strength`` (Pa) and ``saturation_strain``; optional
   ``spall_strength``.
+- ``"explosive-jwl"`` and ``"explosive-gamma"``: an explosive of ``materials.explosive``:
+  the unreacted Mie–Grüneisen solid (``rho0``, ``c0``, ``s``, ``gamma0``) and its
+  detonation products, JWL (``A``, ``B`` in Pa, ``R1``, ``R2``, ``omega``, ``E0`` the
+  detonation energy per unit initial volume in Pa) or gamma law (``gamma``, ``q`` the heat
+  of detonation in J/kg); optional ``D_cj``, ``p_cj`` (tabulated, for reports).
+  ``materials/data/explosives.toml`` holds the library's explosives.
 
 - ``"phase-change"``: the two-phase solid of ``materials.phase_change``: ``rho0``,
   ``c1``, ``s1`` (low-pressure phase), ``c2``, ``s2`` (high-pressure phase),
@@ -78,12 +84,14 @@ from typing import Any
 from .base import Material, require_positive
 from .elastic_plastic import ElasticPlastic
 from .errors import MaterialError
+from .explosive import Explosive
 from .finite_plastic import FinitePlastic
 from .ideal_gas import IdealGas
 from .linear_elastic import LinearElastic
 from .mie_gruneisen import MieGruneisen
 from .phase_change import PhaseChangeSolid
 from .porous import PorousSolid
+from .products import Products
 from .saturating_plastic import SaturatingPlastic
 
 MODELS: dict[str, dict[str, tuple[str, ...]]] = {
@@ -104,6 +112,11 @@ MODELS: dict[str, dict[str, tuple[str, ...]]] = {
     "phase-change": {"required": ("rho0", "c1", "s1", "c2", "s2", "transition_stress",
                                   "transition_strain"),
                      "optional": ("spall_strength",)},
+    "explosive-jwl": {"required": ("rho0", "c0", "s", "gamma0", "A", "B", "R1", "R2",
+                                   "omega", "E0"),
+                      "optional": ("D_cj", "p_cj")},
+    "explosive-gamma": {"required": ("rho0", "c0", "s", "gamma0", "gamma", "q"),
+                        "optional": ("D_cj", "p_cj")},
     "porous": {"required": ("solid_rho0", "c0", "s", "gamma0", "alpha0"),
                "optional": ("crush_stress", "compaction_stress", "crush_exponent",
                             "crush_scale", "spall_strength")},
@@ -128,6 +141,9 @@ FIELD_DIMENSIONS: dict[str, str] = {
     "s1": "dimensionless", "c2": "velocity", "s2": "dimensionless",
     "transition_stress": "stress", "transition_strain": "dimensionless",
     "saturation_strength": "stress", "saturation_strain": "dimensionless",
+    "A": "stress", "B": "stress", "R1": "dimensionless", "R2": "dimensionless",
+    "omega": "dimensionless", "E0": "stress", "q": "specific_energy", "D_cj": "velocity",
+    "p_cj": "stress",
 }
 """Physical dimension of every numeric specification field, for readers of files
 that write quantities with units (the dimension names of ``fronttrack.units``)."""
@@ -143,7 +159,7 @@ LIBRARY_FIELD = "library"
 
 
 # --- the library file ----------------------------------------------------------------
-DATA_FILES = ("library.toml", "porous.toml", "phase_change.toml")
+DATA_FILES = ("library.toml", "porous.toml", "phase_change.toml", "explosives.toml")
 """The library's data files, read in this order."""
 
 
@@ -270,6 +286,15 @@ def listing() -> str:
         e = _library()[name]
         lines.append(f"{name:<12} {e['rho0']:>10.0f}  phase change at "
                      f"{e['transition_stress'] / 1e9:.4g} GPa; {e.get('source', '')}")
+    explosives = available("explosive-jwl") + available("explosive-gamma")
+    if explosives:
+        lines.append(f"{'explosive':<12} {'rho0 kg/m3':>10} {'D_CJ m/s':>8} {'p_CJ GPa':>8}  "
+                     f"(CJ point of the products' equation of state); source")
+        for name in explosives:
+            explosive = get(name)
+            cj = explosive.cj_state(explosive.reference_state())
+            lines.append(f"{name:<12} {explosive.rho0:>10.0f} {cj.speed:>8.0f} "
+                         f"{cj.state.sigma / 1e9:>8.2f}  {_library()[name].get('source', '')}")
     lines.append("Names and aliases match without regard to case.  G and Y (yield stress; from "
                  "the HEL where the entry gives one) let a scene use an entry as "
                  "model = \"elastic-plastic\" or \"finite-plastic\" (library = \"NAME\").")
@@ -372,6 +397,8 @@ def material_from_spec(name: str, spec: dict[str, Any]) -> Material:
                                  values["shear_modulus"], values["yield_strength"],
                                  values["saturation_strength"], values["saturation_strain"],
                                  spall_strength=values.get("spall_strength", math.inf))
+    if model in ("explosive-jwl", "explosive-gamma"):
+        return _explosive(name, model, values)
     if model == "phase-change":
         return PhaseChangeSolid(name, values["rho0"], values["c1"], values["s1"], values["c2"],
                                 values["s2"], values["transition_stress"],
@@ -454,6 +481,21 @@ def _porous(name: str, values: dict[str, float]) -> PorousSolid:
                        crush_exponent=values.get("crush_exponent", 2.0),
                        crush_scale=values.get("crush_scale"),
                        spall_strength=values.get("spall_strength", math.inf))
+
+
+def _explosive(name: str, model: str, values: dict[str, float]) -> Explosive:
+    """An explosive: its unreacted Mie-Gruneisen solid and JWL or gamma-law products."""
+    rho0 = values["rho0"]
+    unreacted = MieGruneisen(f"{name} (unreacted)", rho0, values["c0"], values["s"],
+                             values["gamma0"])
+    if model == "explosive-gamma":
+        products = Products.gamma_law(f"{name} products", rho0, values["gamma"], values["q"])
+    else:
+        products = Products(f"{name} products", rho0, require_positive("E0", values["E0"], name)
+                            / rho0, values["omega"], A=values["A"], B=values["B"],
+                            R1=values["R1"], R2=values["R2"])
+    return Explosive(name, unreacted, products, D_cj=values.get("D_cj"),
+                     p_cj=values.get("p_cj"))
 
 
 def _number(name: str, field: str, value: Any) -> float:

@@ -88,6 +88,7 @@ def solve_contact(left_material, left: State, right_material, right: State,
         # compressed again: to the other side the contact is a free surface
         return _against_vacuum(curve_l, left, curve_r, right)
     du = right.u - left.u
+    curve_l, curve_r = _settle(curve_l, curve_r, du)
 
     def phi(sigma):
         g_l, dg_l = curve_l.velocity_change(sigma)
@@ -175,6 +176,19 @@ def _piecewise_linear_root(phi, curve_l, curve_r, guess: float) -> float | None:
     if not low <= sigma <= high:
         return None
     return min(max(sigma, below), above)
+
+
+def _settle(curve_l, curve_r, du: float):
+    """A metastable side (an unreacted explosive, whose curve has ``settle``) takes the
+    reactive branch when the contact would be compressed at its stress: there
+    ``phi(sigma_a) = g_other(sigma_a) + du < 0`` (``materials.explosive``)."""
+    if hasattr(curve_l, "settle"):
+        other = 0.0 if hasattr(curve_r, "settle") else curve_r.velocity_change(
+            curve_l.ahead.sigma)[0]
+        curve_l = curve_l.settle(other + du)
+    if hasattr(curve_r, "settle"):
+        curve_r = curve_r.settle(curve_l.velocity_change(curve_r.ahead.sigma)[0] + du)
+    return curve_l, curve_r
 
 
 def _volume_noise(curve, state: State, sigma: float) -> float:
@@ -303,6 +317,10 @@ def solve_boundary(material, state: State, boundary_at: str, *, stress: float | 
         sides = ((), (), state, None) if direction == LEFT else ((), (), None, state)
         return RiemannSolution(*sides, bonded_sigma=0.0)
     curve = material.wave_curve(state, direction, release)
+    if hasattr(curve, "settle"):  # an unreacted explosive detonates if compressed
+        compression = (float(stress) - state.sigma if stress is not None
+                       else direction * (float(velocity) - state.u))
+        curve = curve.settle(-compression)
     if stress is not None:
         sigma = float(stress)
         curve.check_stress(sigma)
