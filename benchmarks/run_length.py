@@ -2,6 +2,7 @@
 
     python benchmarks/run_length.py            # writes benchmarks/RUN_LENGTH.md
     python benchmarks/run_length.py --quick    # fewer lengths, for a smoke test
+    python benchmarks/run_length.py --stacks   # only (d), appended to RUN_LENGTH.md
 
 For scenes whose wave content does not grow, events and solve time should grow
 linearly with the simulated time ``T``; the fitted exponent ``d ln(events)/d ln(T)``
@@ -133,7 +134,14 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--quick", action="store_true")
     parser.add_argument("--max-seconds", type=float, default=120.0)
+    parser.add_argument("--stacks", action="store_true")
     args = parser.parse_args()
+    if args.stacks:
+        stacks = strength_stacks(range(30), 10.0)
+        out = ROOT / "benchmarks" / "RUN_LENGTH.md"
+        out.write_text(out.read_text() + "\n" + "\n".join(stacks))
+        print("\n".join(stacks))
+        return
     transit = 6e-3 / 5328.0
     factors = (1, 2, 4) if args.quick else (1, 2, 4, 8, 16)
     cases = [
