@@ -9,7 +9,8 @@ interval of time.
 
 The family is represented by ``n + 1`` characteristics carrying the exact states
 ``s_0 ... s_n`` at equal steps of stress (``s_0`` the state ahead, ``s_n`` the state
-behind).  Between characteristics ``k`` and ``k + 1`` the engine keeps the constant
+behind), or of velocity where that takes more steps (a gas expanding towards
+vacuum).  Between characteristics ``k`` and ``k + 1`` the engine keeps the constant
 state ``s_{k+1/2}`` (the midpoint in stress): a staggered pair of grids, as in the
 method of characteristics, where each ray is a characteristic and each cell carries
 the state at its middle.  A ray moves at the characteristic speed of its own state
@@ -59,23 +60,31 @@ def cell_count(jump: float, max_step: float) -> int:
 
 
 def discretise_fan(fan: Fan, material, max_step: float,
-                   table: Isentrope | None = None) -> list[Characteristic]:
+                   table: Isentrope | None = None,
+                   max_velocity_step: float = math.inf) -> list[Characteristic]:
     """The fan as characteristics, head first (see the module docstring).
 
-    With ``table`` (the isentrope of ``fan.ahead``) the interior states come from the
-    invariants: across a fan of direction ``d`` the invariant ``J_{-d}`` of the ahead
-    state is constant.  Without one (a solid whose release path is a branch of its
-    yield surface) they come from ``fan.curve.state_at`` and the speeds from
-    ``fan.curve.characteristic_speed`` where the curve has it, else from
-    ``material.sound_speed``.
+    No cell spans more than ``max_step`` (Pa) of stress nor ``max_velocity_step`` (m/s)
+    of particle velocity.  With ``table`` (the isentrope of ``fan.ahead``) the interior
+    states come from the invariants: across a fan of direction ``d`` the invariant
+    ``J_{-d}`` of the ahead state is constant.  They are equal steps of stress, or of
+    the stress function ``phi`` (equal steps of velocity, ``u = J_{-d} + d phi``) where
+    the velocity needs more cells than the stress: a gas released towards vacuum, whose
+    last steps of stress carry most of its velocity.  Without a table (a solid whose
+    release path is a branch of its yield surface) they come at equal steps of stress
+    from ``fan.curve.state_at`` and the speeds from ``fan.curve.characteristic_speed``
+    where the curve has it, else from ``material.sound_speed``.
     """
-    n = cell_count(fan.behind.sigma - fan.ahead.sigma, max_step)
     a, b = fan.ahead, fan.behind
+    by_stress = cell_count(b.sigma - a.sigma, max_step)
+    n = max(by_stress, cell_count(b.u - a.u, max_velocity_step))
     if table is not None and not table.resolves(abs(b.u - a.u)):
         table = None  # a wave too weak for the table's rounding: the curve's exact states
     step = (b.sigma - a.sigma) / n
     stresses = [a.sigma + 0.5 * k * step for k in range(1, 2 * n)]  # half steps inside
-    if table is not None:
+    if table is not None and n > by_stress:
+        inner, inner_speeds = _by_velocity(fan, table, n)
+    elif table is not None:
         fixed = table.invariants(a)[0 if fan.direction < 0 else 1]
         inner = [table.state_at_stress(s, fixed, fan.direction) for s in stresses]
         inner_speeds = [table.speed_at_stress(s) for s in stresses]
@@ -101,3 +110,21 @@ def discretise_fan(fan: Fan, material, max_step: float,
         rays.append(Characteristic(state=states[2 * k], speed=d * speeds[2 * k], ahead=ahead,
                                    behind=behind, index=k, count=n + 1))
     return rays
+
+
+def _by_velocity(fan: Fan, table: Isentrope, n: int) -> tuple[list[State], list[float]]:
+    """The ``2 n - 1`` interior half-step states of ``fan`` and their Lagrangian sound
+    speeds at equal steps of the stress function ``phi`` (of velocity), from ``table``."""
+    a, b = fan.ahead, fan.behind
+    j_plus, j_minus = table.invariants(a)
+    phi_a = 0.5 * (j_plus - j_minus)
+    phi_b = table.phi_at_stress(b.sigma)
+    states, speeds = [], []
+    for k in range(1, 2 * n):
+        phi = phi_a + 0.5 * k * (phi_b - phi_a) / n
+        # the invariant the fan carries is fixed: J- across a right-going fan, J+ else
+        pair = (j_minus + 2.0 * phi, j_minus) if fan.direction > 0 else \
+            (j_plus, j_plus - 2.0 * phi)
+        states.append(table.state(*pair))
+        speeds.append(table.speed(*pair))
+    return states, speeds

@@ -278,23 +278,29 @@ def boundary_steps(engine, spec, boundary: Front) -> list[tuple[float, float]]:
     """Times (s) and values at which a prescribed history changes the boundary value.
 
     A ramp is followed in steps that each carry at most one characteristic step of
-    stress: the value changes at the knots ``t_k`` of the ramp to its value at the
+    stress and of velocity (estimated with the impedance of the initial state): the value
+    changes at the knots ``t_k`` of the ramp to its value at the
     middle of the next interval (the staggered cells of ``characteristics.simple_waves``)
     and reaches the end value at the ramp's end.
     """
     if spec.kind not in (BoundaryKind.VELOCITY, BoundaryKind.STRESS) or len(spec.history) < 2:
         return []
-    side = boundary.side
-    layer = engine.scene.layers[0] if side == "left" else engine.scene.layers[-1]
-    impedance = layer.material.rho0 * layer.material.sound_speed(layer.material.v0, 0.0)
-    step = engine.resolution.step
+    end = 0 if boundary.side == "left" else -1
+    material, state = engine.scene.layers[end].material, engine.initial_states[end]
+    impedance = material.rho0 * material.sound_speed(state.v, state.e)  # of the initial state
+    res = engine.resolution
     steps = []
     for (t0, y0), (t1, y1) in zip(spec.history[:-1], spec.history[1:], strict=True):
         if t1 == t0:  # a step
             steps.append((t1, y1))
             continue
-        jump = abs(y1 - y0) * (impedance if spec.kind == BoundaryKind.VELOCITY else 1.0)
-        count = max(1, math.ceil(jump / step - 1e-9)) if jump > 0 else 0
+        velocity = spec.kind == BoundaryKind.VELOCITY
+        stress_jump = abs(y1 - y0) * (impedance if velocity else 1.0)
+        velocity_jump = (abs(y1 - y0) if velocity
+                         else abs(y1 - y0) / impedance if impedance > 0.0 else 0.0)
+        count = (max(1, math.ceil(stress_jump / res.step - 1e-9),
+                     math.ceil(velocity_jump / res.velocity_step - 1e-9))
+                 if y1 != y0 else 0)
         for k in range(count):
             ta = t0 + (t1 - t0) * k / count
             tb = t0 + (t1 - t0) * (k + 1) / count

@@ -1,10 +1,10 @@
 """The waves a Riemann problem sends out, as fronts of the queue.
 
-A shock is one front; a shock weaker than the characteristic step is a compression
-characteristic (``_weak_shock_ray``).  A simple wave (fan) is a family of
+A shock is one front; a shock weaker than the characteristic step (in stress and in
+velocity) is a compression characteristic (``_weak_shock_ray``).  A simple wave (fan) is a family of
 characteristics (``characteristics.simple_waves``): one ray per characteristic, each
 with its own Riemann invariant, the cells between them on the fan's isentrope.  A
-family weaker than the negligible stress is dropped and counted.
+family weaker than the negligible stress and velocity is dropped and counted.
 """
 
 from __future__ import annotations
@@ -41,7 +41,7 @@ def wave_fronts(engine, waves, material, t: float, x: float, incoming,
     if not waves:
         return []
     jump = waves[-1].behind.sigma - waves[0].ahead.sigma
-    if abs(jump) <= engine.resolution.negligible:
+    if engine.resolution.is_negligible(jump, waves[-1].behind.u - waves[0].ahead.u):
         engine.counters.dropped_stress += abs(jump)
         engine.counters.dropped_waves += 1
         return None
@@ -75,7 +75,8 @@ def _weak_shock_ray(engine, shock, material, t, x, parent, direction) -> WaveSpe
     step, or its states have no common table.
     """
     res = engine.resolution
-    if res.release != "isentrope" or abs(shock.behind.sigma - shock.ahead.sigma) > res.step:
+    if (res.release != "isentrope" or abs(shock.behind.sigma - shock.ahead.sigma) > res.step
+            or abs(shock.behind.u - shock.ahead.u) > res.velocity_step):
         return None
     table = engine.tables.table(material, shock.ahead)
     if table is None or not table.matches(shock.behind, engine.tables.tolerance):
@@ -97,12 +98,16 @@ def _weak_shock_ray(engine, shock, material, t, x, parent, direction) -> WaveSpe
 def _fan_fronts(engine, fan: Fan, material, t, x, parent, direction) -> list[WaveSpec]:
     # a one-ray wave uses the table of its isentrope if there is one already; a family
     # of several characteristics (which lattices will cross) builds one
-    several = abs(fan.behind.sigma - fan.ahead.sigma) > engine.resolution.step
+    res = engine.resolution
+    several = (abs(fan.behind.sigma - fan.ahead.sigma) > res.step
+               or abs(fan.behind.u - fan.ahead.u) > res.velocity_step)
     table = (engine.tables.table(material, fan.ahead, build=several)
-             if engine.resolution.release == "isentrope" else None)
-    if table is not None and not table.matches(fan.behind, engine.tables.tolerance):
+             if res.release == "isentrope" else None)
+    # vacuum (a gas expanded to zero pressure) ends every isentrope of the gas
+    if table is not None and math.isfinite(fan.behind.v) \
+            and not table.matches(fan.behind, engine.tables.tolerance):
         table = None
-    characteristics = discretise_fan(fan, material, engine.resolution.step, table)
+    characteristics = discretise_fan(fan, material, res.step, table, res.velocity_step)
     if len(characteristics) == 1 and parent is not None and parent.kind == FrontKind.RAY:
         fan_id, index, count = parent.fan, parent.ray_index, parent.ray_count
     else:
