@@ -372,6 +372,13 @@ class Engine:
                                           -1)
         right_specs = outgoing.wave_fronts(self, sol.right_waves, material_right, t, x,
                                            incoming, +1)
+        if (left_specs is None) != (right_specs is None) and outgoing.creates_energy(
+                sol, region_left, region_right, left_specs is None):
+            # dropping one family would leave a mismatch that does work: keep it
+            left_specs = outgoing.wave_fronts(self, sol.left_waves, material_left, t, x,
+                                              incoming, -1, keep=True)
+            right_specs = outgoing.wave_fronts(self, sol.right_waves, material_right, t, x,
+                                               incoming, +1, keep=True)
         left_star = sol.left_star if left_specs is not None else (
             region_left.state if region_left is not None else None)
         right_star = sol.right_star if right_specs is not None else (
