@@ -31,18 +31,17 @@ class WaveSpec:
 
 
 def wave_fronts(engine, waves, material, t: float, x: float, incoming,
-                direction: int, keep: bool = False) -> list[WaveSpec] | None:
+                direction: int) -> list[WaveSpec] | None:
     """Fronts for the waves of one direction leaving an event at ``(x, t)``, leading first.
 
-    ``None`` when the whole family is weaker than the negligible stress (it is dropped),
-    unless ``keep``.  A single-ray wave leaving a ray's event keeps that ray's fan, so the
+    ``None`` when the whole family is weaker than the negligible stress and velocity (it
+    is dropped).  A single-ray wave leaving a ray's event keeps that ray's fan, so the
     rays of a fan stay one fan through the events that continue them.
     """
     if not waves:
         return []
     jump = waves[-1].behind.sigma - waves[0].ahead.sigma
-    if not keep and engine.resolution.is_negligible(jump, waves[-1].behind.u
-                                                    - waves[0].ahead.u):
+    if negligible(engine, waves):
         engine.counters.dropped_stress += abs(jump)
         engine.counters.dropped_waves += 1
         return None
@@ -65,21 +64,10 @@ def wave_fronts(engine, waves, material, t: float, x: float, incoming,
     return specs
 
 
-def creates_energy(solution, region_left, region_right, left_dropped: bool) -> bool:
-    """Whether dropping one family of ``solution`` would create energy.
-
-    The dropped side keeps its old state, the other gets the star state, and the two
-    meet at the event's point, which does not move in X: the energy flux ``sigma u`` into
-    it from the left then differs from the flux out of it to the right, and the total
-    energy changes at the rate ``sigma_L u_L - sigma_R u_R`` (J/m^2/s) until a later wave
-    passes.  A run may lose energy by neglecting a wave, never create it.
-    """
-    if region_left is None or region_right is None or solution.left_star is None \
-            or solution.right_star is None:
-        return False  # at a boundary the work is measured on the cell next to it
-    left = region_left.state if left_dropped else solution.left_star
-    right = solution.right_star if left_dropped else region_right.state
-    return left.sigma * left.u - right.sigma * right.u > 0.0
+def negligible(engine, waves) -> bool:
+    """Whether a family of ``waves`` (leading first) is weaker than the run resolves."""
+    return bool(waves) and engine.resolution.is_negligible(
+        waves[-1].behind.sigma - waves[0].ahead.sigma, waves[-1].behind.u - waves[0].ahead.u)
 
 
 def _weak_shock_ray(engine, shock, material, t, x, parent, direction) -> WaveSpec | None:
