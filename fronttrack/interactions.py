@@ -128,10 +128,28 @@ def _boundary(engine, site, region_left, region_right, t, incoming, timer):
     if spec.kind in (BoundaryKind.FREE, BoundaryKind.STRESS):
         return kind, solve_boundary(region.material, region.state, site.side, stress=value,
                                     release=release)
-    if spec.kind == BoundaryKind.VELOCITY and spec.bond != "bonded":
+    if spec.kind == BoundaryKind.VELOCITY and spec.bond != "bonded" \
+            or site.piston_velocity is not None:
         return _piston(engine, site, region, value, t, kind)
-    return kind, solve_boundary(region.material, region.state, site.side, velocity=value,
-                                release=release)
+    try:
+        return kind, solve_boundary(region.material, region.state, site.side,
+                                    velocity=value, release=release)
+    except NoSolutionError:
+        if not _pulls(region, site.side, value, release):
+            raise
+    # a wall or bonded piston pulling beyond the most tension the equation of state
+    # carries: the material cavitates at the face, which comes free of the boundary
+    engine.counters.cavitations += 1
+    return _piston(engine, site, region, value, t, kind)
+
+
+def _pulls(region, side: str, velocity: float, release) -> bool:
+    """Whether holding the face at ``velocity`` needs tension: the boundary moves away
+    from the face faster than the face would move free."""
+    free = solve_boundary(region.material, region.state, side, stress=0.0, release=release)
+    face = free.right_star if side == "left" else free.left_star
+    outward = -1.0 if side == "left" else 1.0
+    return outward * (velocity - face.u) > 0.0
 
 
 def _piston(engine, site, region, velocity: float, t: float, kind):
@@ -160,13 +178,20 @@ def _piston(engine, site, region, velocity: float, t: float, kind):
         site.history.append((t, FrontKind.BOUNDARY))
         _schedule_next_step(engine, site, t)
         kind = EventKind.GAP_CLOSE
-    sol = solve_boundary(region.material, region.state, site.side, velocity=velocity,
-                         release=release)
-    if sol.bonded_sigma >= 0.0:
+    try:
+        sol = solve_boundary(region.material, region.state, site.side, velocity=velocity,
+                             release=release)
+        tension = sol.bonded_sigma
+    except NoSolutionError:
+        if not _pulls(region, site.side, velocity, release):
+            raise
+        tension = -math.inf  # beyond the most tension the equation of state carries
+    if tension >= 0.0:
         return kind, sol
     free = solve_boundary(region.material, region.state, site.side, stress=0.0,
                           release=release)
-    free = dataclasses.replace(free, separated=True, bonded_sigma=sol.bonded_sigma)
+    free = dataclasses.replace(free, separated=True,
+                               bonded_sigma=tension if math.isfinite(tension) else 0.0)
     site.piston_velocity, site.gap_width, site.gap_time = velocity, 0.0, t
     site.history.append((t, FrontKind.GAP))
     face = free.right_star if site.side == "left" else free.left_star
