@@ -25,7 +25,13 @@ from __future__ import annotations
 import dataclasses
 import math
 
-from materials import NoSolutionError, RiemannSolution, solve_boundary, solve_contact
+from materials import (
+    NoSolutionError,
+    RiemannSolution,
+    StateOutOfRangeError,
+    solve_boundary,
+    solve_contact,
+)
 
 from . import spall
 from .fronts import Front
@@ -145,8 +151,13 @@ def _boundary(engine, site, region_left, region_right, t, incoming, timer):
 
 def _pulls(region, side: str, velocity: float, release) -> bool:
     """Whether holding the face at ``velocity`` needs tension: the boundary moves away
-    from the face faster than the face would move free."""
-    free = solve_boundary(region.material, region.state, side, stress=0.0, release=release)
+    from the face faster than the face would move free (``False`` where its equation of
+    state cannot reach zero stress: then the face cannot come free either)."""
+    try:
+        free = solve_boundary(region.material, region.state, side, stress=0.0,
+                              release=release)
+    except StateOutOfRangeError:
+        return False
     face = free.right_star if side == "left" else free.left_star
     outward = -1.0 if side == "left" else 1.0
     return outward * (velocity - face.u) > 0.0
