@@ -19,6 +19,7 @@ returns the first point and the two ends of that zone.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -79,7 +80,9 @@ def fracture_zone(lattice, strength: float, speed: float,
     x, t = _lower_envelope(x, t)
     first = int(np.argmin(t))
     x_f, t_f = _vertex(x, t, first)
-    slowness = 1.0 / speed
+    # a relief with no sound speed (a gas at zero pressure) reaches nothing: every point
+    # that reaches the level fractures of itself
+    slowness = 1.0 / speed if speed > 0.0 else math.inf
     hi = first
     while hi + 1 < x.size and (t[hi + 1] - t[hi]) < slowness * (x[hi + 1] - x[hi]):
         hi += 1

@@ -7,18 +7,18 @@ a straight line of constant state (Davison ch. 8).  A *centred* wave (fan) issue
 from one point; a wave launched by a boundary ramp issues from the boundary over an
 interval of time.
 
-The family is represented by ``n + 1`` characteristics carrying the exact states
-``s_0 ... s_n`` at equal steps of stress (``s_0`` the state ahead, ``s_n`` the state
-behind).  Between characteristics ``k`` and ``k + 1`` the engine keeps the constant
-state ``s_{k+1/2}`` (the midpoint in stress): a staggered pair of grids, as in the
-method of characteristics, where each ray is a characteristic and each cell carries
-the state at its middle.  A ray moves at the characteristic speed of its own state
-(exact for a centred wave: each ray is one of its characteristics).  Moving rays at
-the speed that conserves energy between the cells beside them instead was measured
-and rejected: that speed is ill-conditioned where ``sigma = Z u`` inside a wave, and
-in Sod's fan it made the L1 record error four to ten times larger.  Queries read the solution
-continuously by interpolating the invariants between characteristics
-(``characteristics.reconstruct``).
+The family is represented by ``n + 1`` characteristics carrying the exact states ``s_0
+... s_n`` at equal steps of stress (``s_0`` the state ahead, ``s_n`` the state behind),
+or of a measure that bounds the velocity steps too where stress alone would not (a gas
+expanding towards vacuum). Between characteristics ``k`` and ``k + 1`` the engine keeps
+the constant state ``s_{k+1/2}`` (the midpoint): a staggered pair of grids, as in the
+method of characteristics, where each ray is a characteristic and each cell carries the
+state at its middle. A ray moves at the characteristic speed of its own state (exact for
+a centred wave: each ray is one of its characteristics). Moving rays at the speed that
+conserves energy between the cells beside them instead was measured and rejected: that
+speed is ill-conditioned where ``sigma = Z u`` inside a wave, and in Sod's fan it made
+the L1 record error four to ten times larger. Queries read the solution continuously by
+interpolating the invariants between characteristics (``characteristics.reconstruct``).
 
 A wave weaker than one step is a single ray from ``s_0`` to ``s_1`` at the speed of
 the middle state.
@@ -28,6 +28,8 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+
+import numpy as np
 
 from materials import Fan, State
 
@@ -59,18 +61,24 @@ def cell_count(jump: float, max_step: float) -> int:
 
 
 def discretise_fan(fan: Fan, material, max_step: float,
-                   table: Isentrope | None = None) -> list[Characteristic]:
+                   table: Isentrope | None = None,
+                   max_velocity_step: float = math.inf) -> list[Characteristic]:
     """The fan as characteristics, head first (see the module docstring).
 
-    With ``table`` (the isentrope of ``fan.ahead``) the interior states come from the
-    invariants: across a fan of direction ``d`` the invariant ``J_{-d}`` of the ahead
-    state is constant.  Without one (a solid whose release path is a branch of its
-    yield surface) they come from ``fan.curve.state_at`` and the speeds from
+    No cell spans more than ``max_step`` (Pa) of stress nor ``max_velocity_step`` (m/s)
+    of particle velocity.  With ``table`` (the isentrope of ``fan.ahead``) the interior
+    states come from the invariants: across a fan of direction ``d`` the invariant
+    ``J_{-d}`` of the ahead state is constant.  They lie at equal steps of stress unless
+    a step of velocity would then exceed its limit (a gas released towards vacuum, whose
+    last steps of stress carry most of its velocity): then at equal steps of the measure
+    ``max(|d sigma| / max_step, |d u| / max_velocity_step)`` along the isentrope.  Without
+    a table (a solid whose release path is a branch of its yield surface) they come at
+    equal steps of stress from ``fan.curve.state_at`` and the speeds from
     ``fan.curve.characteristic_speed`` where the curve has it, else from
     ``material.sound_speed``.
     """
-    n = cell_count(fan.behind.sigma - fan.ahead.sigma, max_step)
     a, b = fan.ahead, fan.behind
+    n = cell_count(b.sigma - a.sigma, max_step)
     if table is not None and not table.resolves(abs(b.u - a.u)):
         table = None  # a wave too weak for the table's rounding: the curve's exact states
     step = (b.sigma - a.sigma) / n
@@ -79,6 +87,10 @@ def discretise_fan(fan: Fan, material, max_step: float,
         fixed = table.invariants(a)[0 if fan.direction < 0 else 1]
         inner = [table.state_at_stress(s, fixed, fan.direction) for s in stresses]
         inner_speeds = [table.speed_at_stress(s) for s in stresses]
+        on_rays = [a, *inner[1::2], b]
+        if max(abs(q.u - p.u) for p, q in zip(on_rays, on_rays[1:], strict=False)) \
+                > max_velocity_step:
+            n, inner, inner_speeds = _by_measure(fan, table, max_step, max_velocity_step)
     else:
         inner = [fan.curve.state_at(s) for s in stresses]
         speed_on_curve = getattr(fan.curve, "characteristic_speed", None)
@@ -101,3 +113,35 @@ def discretise_fan(fan: Fan, material, max_step: float,
         rays.append(Characteristic(state=states[2 * k], speed=d * speeds[2 * k], ahead=ahead,
                                    behind=behind, index=k, count=n + 1))
     return rays
+
+
+MEASURE_SAMPLES = 32
+"""Samples of the isentrope per cell when cells are placed at equal steps of the measure
+``max(|d sigma| / max_step, |d u| / max_velocity_step)`` (``_by_measure``)."""
+
+
+def _by_measure(fan: Fan, table: Isentrope, max_step: float, max_velocity_step: float
+                ) -> tuple[int, list[State], list[float]]:
+    """The cell count ``n``, the ``2 n - 1`` interior half-step states of ``fan`` and their
+    Lagrangian sound speeds, at equal steps of the measure ``max(|d sigma| / max_step,
+    |d u| / max_velocity_step)`` along the fan's isentrope (each step of the measure is at
+    most one cell in stress and in velocity).  Along the fan the invariant ``J_{-d}`` is
+    fixed and the stress function ``phi`` varies: ``u = J_{-d} + d phi``."""
+    a, b = fan.ahead, fan.behind
+    j_plus, j_minus = table.invariants(a)
+    phi_a, phi_b = 0.5 * (j_plus - j_minus), table.phi_at_stress(b.sigma)
+    rough = cell_count(b.sigma - a.sigma, max_step) + cell_count(b.u - a.u, max_velocity_step)
+    phi = np.linspace(phi_a, phi_b, MEASURE_SAMPLES * rough + 1)
+    sigma = table.arrays_at_phi(phi)[0]
+    measure = np.concatenate(([0.0], np.cumsum(np.maximum(
+        np.abs(np.diff(sigma)) / max_step, np.abs(np.diff(phi)) / max_velocity_step))))
+    n = max(1, math.ceil(measure[-1] - 1e-9))
+    targets = measure[-1] * np.arange(1, 2 * n) / (2 * n)
+    states, speeds = [], []
+    for value in np.interp(targets, measure, phi):
+        # the invariant the fan carries is fixed: J- across a right-going fan, J+ else
+        pair = (j_minus + 2.0 * value, j_minus) if fan.direction > 0 else \
+            (j_plus, j_plus - 2.0 * value)
+        states.append(table.state(*pair))
+        speeds.append(table.speed(*pair))
+    return n, states, speeds

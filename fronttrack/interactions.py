@@ -25,7 +25,13 @@ from __future__ import annotations
 import dataclasses
 import math
 
-from materials import NoSolutionError, RiemannSolution, solve_boundary, solve_contact
+from materials import (
+    NoSolutionError,
+    RiemannSolution,
+    StateOutOfRangeError,
+    solve_boundary,
+    solve_contact,
+)
 
 from . import initiation, spall
 from .fronts import Front
@@ -131,10 +137,33 @@ def _boundary(engine, site, region_left, region_right, t, incoming, timer):
     if spec.kind in (BoundaryKind.FREE, BoundaryKind.STRESS):
         return kind, solve_boundary(region.material, region.state, site.side, stress=value,
                                     release=release)
-    if spec.kind == BoundaryKind.VELOCITY and spec.bond != "bonded":
+    if spec.kind == BoundaryKind.VELOCITY and spec.bond != "bonded" \
+            or site.piston_velocity is not None:
         return _piston(engine, site, region, value, t, kind)
-    return kind, solve_boundary(region.material, region.state, site.side, velocity=value,
-                                release=release)
+    try:
+        return kind, solve_boundary(region.material, region.state, site.side,
+                                    velocity=value, release=release)
+    except NoSolutionError:
+        if not _pulls(region, site.side, value, release):
+            raise
+    # a wall or bonded piston pulling beyond the most tension the equation of state
+    # carries: the material cavitates at the face, which comes free of the boundary
+    engine.counters.cavitations += 1
+    return _piston(engine, site, region, value, t, kind)
+
+
+def _pulls(region, side: str, velocity: float, release) -> bool:
+    """Whether holding the face at ``velocity`` needs tension: the boundary moves away
+    from the face faster than the face would move free (``False`` where its equation of
+    state cannot reach zero stress: then the face cannot come free either)."""
+    try:
+        free = solve_boundary(region.material, region.state, side, stress=0.0,
+                              release=release)
+    except StateOutOfRangeError:
+        return False
+    face = free.right_star if side == "left" else free.left_star
+    outward = -1.0 if side == "left" else 1.0
+    return outward * (velocity - face.u) > 0.0
 
 
 def _piston(engine, site, region, velocity: float, t: float, kind):
@@ -163,13 +192,20 @@ def _piston(engine, site, region, velocity: float, t: float, kind):
         site.history.append((t, FrontKind.BOUNDARY))
         _schedule_next_step(engine, site, t)
         kind = EventKind.GAP_CLOSE
-    sol = solve_boundary(region.material, region.state, site.side, velocity=velocity,
-                         release=release)
-    if sol.bonded_sigma >= 0.0:
+    try:
+        sol = solve_boundary(region.material, region.state, site.side, velocity=velocity,
+                             release=release)
+        tension = sol.bonded_sigma
+    except NoSolutionError:
+        if not _pulls(region, site.side, velocity, release):
+            raise
+        tension = -math.inf  # beyond the most tension the equation of state carries
+    if tension >= 0.0:
         return kind, sol
     free = solve_boundary(region.material, region.state, site.side, stress=0.0,
                           release=release)
-    free = dataclasses.replace(free, separated=True, bonded_sigma=sol.bonded_sigma)
+    free = dataclasses.replace(free, separated=True,
+                               bonded_sigma=tension if math.isfinite(tension) else 0.0)
     site.piston_velocity, site.gap_width, site.gap_time = velocity, 0.0, t
     site.history.append((t, FrontKind.GAP))
     face = free.right_star if site.side == "left" else free.left_star
@@ -281,23 +317,29 @@ def boundary_steps(engine, spec, boundary: Front) -> list[tuple[float, float]]:
     """Times (s) and values at which a prescribed history changes the boundary value.
 
     A ramp is followed in steps that each carry at most one characteristic step of
-    stress: the value changes at the knots ``t_k`` of the ramp to its value at the
+    stress and of velocity (estimated with the impedance of the initial state): the value
+    changes at the knots ``t_k`` of the ramp to its value at the
     middle of the next interval (the staggered cells of ``characteristics.simple_waves``)
     and reaches the end value at the ramp's end.
     """
     if spec.kind not in (BoundaryKind.VELOCITY, BoundaryKind.STRESS) or len(spec.history) < 2:
         return []
-    side = boundary.side
-    layer = engine.scene.layers[0] if side == "left" else engine.scene.layers[-1]
-    impedance = layer.material.rho0 * layer.material.sound_speed(layer.material.v0, 0.0)
-    step = engine.resolution.step
+    end = 0 if boundary.side == "left" else -1
+    material, state = engine.scene.layers[end].material, engine.initial_states[end]
+    impedance = material.rho0 * material.sound_speed(state.v, state.e)  # of the initial state
+    res = engine.resolution
     steps = []
     for (t0, y0), (t1, y1) in zip(spec.history[:-1], spec.history[1:], strict=True):
         if t1 == t0:  # a step
             steps.append((t1, y1))
             continue
-        jump = abs(y1 - y0) * (impedance if spec.kind == BoundaryKind.VELOCITY else 1.0)
-        count = max(1, math.ceil(jump / step - 1e-9)) if jump > 0 else 0
+        velocity = spec.kind == BoundaryKind.VELOCITY
+        stress_jump = abs(y1 - y0) * (impedance if velocity else 1.0)
+        velocity_jump = (abs(y1 - y0) if velocity
+                         else abs(y1 - y0) / impedance if impedance > 0.0 else 0.0)
+        count = (max(1, math.ceil(stress_jump / res.step - 1e-9),
+                     math.ceil(velocity_jump / res.velocity_step - 1e-9))
+                 if y1 != y0 else 0)
         for k in range(count):
             ta = t0 + (t1 - t0) * k / count
             tb = t0 + (t1 - t0) * (k + 1) / count

@@ -1,10 +1,10 @@
 """The waves a Riemann problem sends out, as fronts of the queue.
 
-A shock is one front; a shock weaker than the characteristic step is a compression
-characteristic (``_weak_shock_ray``).  A simple wave (fan) is a family of
+A shock is one front; a shock weaker than the characteristic step (in stress and in
+velocity) is a compression characteristic (``_weak_shock_ray``).  A simple wave (fan) is a family of
 characteristics (``characteristics.simple_waves``): one ray per characteristic, each
 with its own Riemann invariant, the cells between them on the fan's isentrope.  A
-family weaker than the negligible stress is dropped and counted.
+family weaker than the negligible stress and velocity is dropped and counted.
 
 Every wave carries a lineage (``lineage``): which wave it descends from, so that a
 station can tell the reflections of the first shock that reached it (they inherit its
@@ -57,18 +57,16 @@ def wave_fronts(engine, waves, material, t: float, x: float, incoming,
                 direction: int, site=None) -> list[WaveSpec] | None:
     """Fronts for the waves of one direction leaving an event at ``(x, t)``, leading first.
 
-    ``None`` when the whole family is weaker than the negligible stress (it is dropped).
-    A single-ray wave leaving a ray's event keeps that ray's fan, so the rays of a fan
-    stay one fan through the events that continue them.  ``site``: the event's site, if
-    any (its kind decides the waves' ``lineage``).
+    ``None`` when the whole family is weaker than the negligible stress and velocity (it
+    is dropped).  A single-ray wave leaving a ray's event keeps that ray's fan, so the
+    rays of a fan stay one fan through the events that continue them.  ``site``: the
+    event's site, if any (its kind decides the waves' ``lineage``).
     """
     if not waves:
         return []
-    # the family's total variation: a detonation and its Taylor wave to a free face
-    # (up to p_CJ and back to zero) is not a wave of zero strength
-    jump = sum(abs(w.behind.sigma - w.ahead.sigma) for w in waves)
-    if jump <= engine.resolution.negligible:
-        engine.counters.dropped_stress += jump
+    if negligible(engine, waves):
+        engine.counters.dropped_stress += sum(abs(w.behind.sigma - w.ahead.sigma)
+                                              for w in waves)
         engine.counters.dropped_waves += 1
         return None
     parent = next((f for f in incoming if f.direction == direction), None)
@@ -91,6 +89,15 @@ def wave_fronts(engine, waves, material, t: float, x: float, incoming,
     return specs
 
 
+def negligible(engine, waves) -> bool:
+    """Whether a family of ``waves`` (leading first) is weaker than the run resolves, by
+    its total variation in stress and in velocity: a detonation and its Taylor wave to a
+    free face (up to p_CJ and back to zero) is not a wave of zero strength."""
+    return bool(waves) and engine.resolution.is_negligible(
+        sum(abs(w.behind.sigma - w.ahead.sigma) for w in waves),
+        sum(abs(w.behind.u - w.ahead.u) for w in waves))
+
+
 def _weak_shock_ray(engine, shock, material, t, x, parent, direction,
                     origin) -> WaveSpec | None:
     """A shock weaker than the characteristic step, as a compression characteristic.
@@ -103,7 +110,8 @@ def _weak_shock_ray(engine, shock, material, t, x, parent, direction,
     step, or its states have no common table.
     """
     res = engine.resolution
-    if res.release != "isentrope" or abs(shock.behind.sigma - shock.ahead.sigma) > res.step:
+    if (res.release != "isentrope" or abs(shock.behind.sigma - shock.ahead.sigma) > res.step
+            or abs(shock.behind.u - shock.ahead.u) > res.velocity_step):
         return None
     table = engine.tables.table(material, shock.ahead)
     if table is None or not table.matches(shock.behind, engine.tables.tolerance):
@@ -126,12 +134,16 @@ def _fan_fronts(engine, fan: Fan, material, t, x, parent, direction,
                 origin) -> list[WaveSpec]:
     # a one-ray wave uses the table of its isentrope if there is one already; a family
     # of several characteristics (which lattices will cross) builds one
-    several = abs(fan.behind.sigma - fan.ahead.sigma) > engine.resolution.step
+    res = engine.resolution
+    several = (abs(fan.behind.sigma - fan.ahead.sigma) > res.step
+               or abs(fan.behind.u - fan.ahead.u) > res.velocity_step)
     table = (engine.tables.table(material, fan.ahead, build=several)
-             if engine.resolution.release == "isentrope" else None)
-    if table is not None and not table.matches(fan.behind, engine.tables.tolerance):
+             if res.release == "isentrope" else None)
+    # vacuum (a gas expanded to zero pressure) ends every isentrope of the gas
+    if table is not None and math.isfinite(fan.behind.v) \
+            and not table.matches(fan.behind, engine.tables.tolerance):
         table = None
-    characteristics = discretise_fan(fan, material, engine.resolution.step, table)
+    characteristics = discretise_fan(fan, material, res.step, table, res.velocity_step)
     if len(characteristics) == 1 and parent is not None and parent.kind == FrontKind.RAY:
         fan_id, index, count = parent.fan, parent.ray_index, parent.ray_count
     else:

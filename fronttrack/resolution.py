@@ -13,11 +13,22 @@ or yield stress in the scene, so that a threshold is never crossed by one step.
 ``rays_per_fan`` (characteristics per fan spanning the stress scale) and
 ``characteristic_step`` (Pa) override both rules.
 
+A gas turns a small stress into a large velocity (a gas released to vacuum drops a
+few MPa and gains its escape speed ``2 c / (gamma - 1)``), so the same relative
+resolution holds in velocity too: ``velocity_step = step * velocity_scale /
+stress_scale`` with ``velocity_scale`` the largest velocity jump of the initial Riemann
+problems (at least ``stress_scale`` over the smallest impedance of a solid, so that a
+solid's waves, whose velocity and stress go together, are resolved and neglected as
+before by their stress alone), and no characteristic
+of a fan, and no compression wave taken for a characteristic, spans more than that.
+
 Waves weaker than the negligible stress are dropped (and counted).  The default is
 ``NEGLIGIBLE_FRACTION`` of the stress scale, raised to ``NEGLIGIBLE_STEP_FRACTION`` of
 the step where fans can form (their echoes a thousand times below the resolution
 change nothing) and to ``NEGLIGIBLE_SPLIT_FRACTION`` of the scale where elastic–plastic
-solids split every wave in two.
+solids split every wave in two.  A wave is negligible only when its velocity jump is
+too, below ``negligible * velocity_scale / stress_scale``: a wave of a few MPa in a
+gas can carry hundreds of m/s.
 """
 
 from __future__ import annotations
@@ -25,7 +36,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from materials import State, solve_boundary, solve_contact
+from materials import IdealGas, State, WavediagramError, solve_boundary, solve_contact
 
 from .kinds import BoundaryKind, Release
 from .scene import Scene
@@ -68,14 +79,19 @@ class Resolution:
 
     ``stress_scale``: the largest stress the initial Riemann problems make (Pa);
     ``step``: the largest stress step between two characteristics of a family (Pa);
+    ``velocity_step``: the largest velocity step between them (m/s);
     ``step_rule``: which rule set it; ``stress_tolerance``/``velocity_tolerance``: the
     record tolerances asked for (Pa, m/s); ``negligible``: waves weaker than this are
     dropped (Pa); ``length``: the stack's length (m) and ``x_tol`` the distance below
-    which two fronts meet at one point; ``release``: the unloading path.
+    which two fronts meet at one point; ``release``: the unloading path;
+    ``negligible_velocity``: the velocity jump (m/s) below which a wave whose stress
+    jump is negligible is dropped.
     """
 
     stress_scale: float
     step: float
+    velocity_step: float
+    negligible_velocity: float
     step_rule: str
     stress_tolerance: float
     velocity_tolerance: float
@@ -93,12 +109,19 @@ class Resolution:
             "characteristic_step": self.step,
             "characteristic_step_rule": self.step_rule,
             "ray_stress_step": self.step,
+            "ray_velocity_step": self.velocity_step,
             "stress_tolerance": self.stress_tolerance,
             "velocity_tolerance": self.velocity_tolerance,
             "estimated_record_error": (RECORD_ERROR_CONSTANT * self.step**2 / self.stress_scale
                                        if self.makes_fans else 0.0),
             "negligible_stress": self.negligible,
+            "negligible_velocity": self.negligible_velocity,
         }
+
+    def is_negligible(self, stress_jump: float, velocity_jump: float) -> bool:
+        """Whether a wave of these jumps (Pa, m/s) is weaker than the run resolves."""
+        return (abs(stress_jump) <= self.negligible
+                and abs(velocity_jump) <= self.negligible_velocity)
 
 
 def initial_state(layer) -> State:
@@ -112,7 +135,7 @@ def resolve(scene: Scene, states: list[State]) -> Resolution:
     """The resolution of ``scene`` whose layers start in ``states``."""
     acc = scene.accuracy
     release = Release(acc.release)
-    scale = stress_scale(scene, states)
+    scale, velocity_jump = initial_scales(scene, states)
     makes_fans = release == Release.ISENTROPE and any(
         layer.material.makes_fans for layer in scene.layers)
     impedance = max(layer.material.rho0 * layer.material.sound_speed(s.v, s.e)
@@ -124,8 +147,12 @@ def resolve(scene: Scene, states: list[State]) -> Resolution:
     stress_tol = min(stress_tol, velocity_tol * impedance)
     step, rule = _step(scene, scale, stress_tol)
     negligible = _negligible(scene, scale, step, makes_fans)
+    velocity_ratio = max(velocity_jump, scale / _softest_solid(scene, states, impedance)
+                         ) / scale  # (m/s) per Pa
     length = scene.length
     return Resolution(stress_scale=scale, step=step, step_rule=rule,
+                      velocity_step=step * velocity_ratio,
+                      negligible_velocity=negligible * velocity_ratio,
                       stress_tolerance=stress_tol, velocity_tolerance=velocity_tol,
                       negligible=negligible, length=length, x_tol=1e-10 * length,
                       release=release, makes_fans=makes_fans)
@@ -169,6 +196,15 @@ def weakest_threshold(scene: Scene) -> tuple[float, str] | None:
     return min(found) if found else None
 
 
+def _softest_solid(scene: Scene, states: list[State], largest: float) -> float:
+    """The smallest initial impedance ``rho0 C_L`` (Pa s/m) of a layer that is not a gas
+    (``largest``, the largest of all, if every layer is a gas)."""
+    solids = [layer.material.rho0 * layer.material.sound_speed(s.v, s.e)
+              for layer, s in zip(scene.layers, states, strict=True)
+              if not isinstance(layer.material, IdealGas)]
+    return min(solids, default=largest)
+
+
 def _negligible(scene: Scene, scale: float, step: float, makes_fans: bool) -> float:
     acc = scene.accuracy
     if acc.negligible_stress is not None:
@@ -183,7 +219,10 @@ def _negligible(scene: Scene, scale: float, step: float, makes_fans: bool) -> fl
 
 def _values_until(boundary, t_end: float) -> list[float]:
     """The values a boundary history takes up to ``t_end`` (s): its points before then and
-    its value at ``t_end`` (the history is linear between points, so these bound it)."""
+    its value at ``t_end`` (the history is linear between points, so these bound it); a
+    free surface's zero stress and a wall's zero velocity."""
+    if boundary.kind in (BoundaryKind.FREE, BoundaryKind.WALL):
+        return [0.0]
     if not boundary.history:
         return []
     return [value for t, value in boundary.history if t <= t_end] + [
@@ -192,27 +231,40 @@ def _values_until(boundary, t_end: float) -> list[float]:
 
 def stress_scale(scene: Scene, states: list[State]) -> float:
     """Largest stress the initial Riemann problems produce (Pa): scales steps and thresholds."""
+    return initial_scales(scene, states)[0]
+
+
+def initial_scales(scene: Scene, states: list[State]) -> tuple[float, float]:
+    """The largest stress (Pa) and the largest velocity jump (m/s) the initial Riemann
+    problems produce (contacts and boundaries, over the boundary histories to ``t_end``)."""
     release = scene.accuracy.release
-    scale = max(abs(s.sigma) for s in states)
+    scale, jump = max(abs(s.sigma) for s in states), 0.0
     layers = scene.layers
     for i in range(len(states) - 1):
         a, b = states[i], states[i + 1]
         if a.u != b.u or a.sigma != b.sigma:
             sol = solve_contact(layers[i].material, a, layers[i + 1].material, b, 0.0, release)
             scale = max(scale, abs(sol.bonded_sigma))
+            jump = max(jump, abs(sol.left_star.u - a.u), abs(sol.right_star.u - b.u))
     ends = ((scene.left, states[0], layers[0].material, "left"),
             (scene.right, states[-1], layers[-1].material, "right"))
     for spec, state, material, side in ends:
         for value in _values_until(spec, scene.t_end):
-            if spec.kind == BoundaryKind.STRESS:
+            by_stress = spec.kind in (BoundaryKind.STRESS, BoundaryKind.FREE)
+            if by_stress:
                 scale = max(scale, abs(value))
-            elif spec.kind == BoundaryKind.VELOCITY:
-                sol = solve_boundary(material, state, side, velocity=value, release=release)
-                scale = max(scale, abs(sol.bonded_sigma))
+            try:
+                sol = solve_boundary(material, state, side, release=release,
+                                     **{"stress" if by_stress else "velocity": value})
+            except WavediagramError:  # beyond the equation of state: the engine says how
+                continue
+            scale = max(scale, abs(sol.bonded_sigma))
+            star = sol.left_star if side == "right" else sol.right_star
+            jump = max(jump, abs(star.u - state.u))
     for layer, s in zip(layers, states, strict=True):
         if hasattr(layer.material, "cj_state"):  # an explosive can detonate: its CJ stress
             scale = max(scale, layer.material.cj_state(s).state.sigma)
     if scale == 0.0:
         scale = max(layer.material.rho0 * layer.material.sound_speed(s.v, s.e)
                     for layer, s in zip(layers, states, strict=True))
-    return scale
+    return scale, jump

@@ -218,7 +218,10 @@ def test_energy_balance_keeps_the_energy_jumps_at_contacts():
     """All shocks (``release = "hugoniot"``): momentum to rounding and energy to the
     negligible stress.  Two states of one stress have one volume here, so an entropy
     contact is an energy jump alone; merging it put shocks off their Hugoniots (1.6 %
-    of the energy lost in this scene before the engine kept such contacts)."""
+    of the energy lost in this scene before the engine kept such contacts).  The
+    contacts still neglected (energy jumps below the negligible stress) keep the state
+    of lower energy, so the balance is a loss (7.6e-4 here; 2e-4 with the sweep-weighted
+    mean that created energy elsewhere, campaign seed 349) within the promise."""
     fe = iron()
     scene = Scene(layers=(Layer(fe, 0.5e-3, 1000.0), Layer(fe, 2.0e-3, 0.0, bond="unbonded")),
                   left=Boundary("free"), right=Boundary("free"), t_end=0.75e-6,
@@ -227,4 +230,5 @@ def test_energy_balance_keeps_the_energy_jumps_at_contacts():
     assert assert_shock_jumps(solution) > 0
     balance = solution.conservation()
     assert balance["momentum_relative_error"] < 1e-9
-    assert balance["energy_relative_error"] < 2e-4
+    report = solution.accuracy_report["balance"]
+    assert -report["promised"] < report["energy_error"] <= 0.0
