@@ -14,7 +14,7 @@ from engine_helpers import assert_contacts_continuous, assert_no_nan
 from fronttrack.engine import EventLimitError
 from fronttrack.runner import run
 from fronttrack.scene import Accuracy, Boundary, Layer, Scene
-from materials.errors import NoSolutionError
+from materials.errors import NoSolutionError, StateOutOfRangeError
 from materials.library import available, get
 
 SCENES = 24
@@ -48,8 +48,9 @@ def test_random_stack_solves_or_names_its_limit(seed):
     except EventLimitError as error:
         assert "accuracy.max_events" in str(error)
         return
-    except NoSolutionError as error:
+    except (NoSolutionError, StateOutOfRangeError) as error:
         # a tension or compression beyond an equation of state: named, with the range
+        # (seed 6: a water face at a gap that cannot unload to zero stress)
         assert "beyond" in str(error) or "outside" in str(error)
         return
     assert_no_nan(solution)
