@@ -223,8 +223,11 @@ def test_interrupt_during_the_solve(tmp_path, capsys, monkeypatch):
 
 def test_sigint_exits_130_without_traceback(tmp_path):
     scene, out = write(tmp_path, LONG_SCENE), tmp_path / "out.json"
+    # a process started in the background inherits SIGINT ignored, and Python then never
+    # raises KeyboardInterrupt: give the child the default disposition, as a terminal does
     process = subprocess.Popen([sys.executable, "-m", "fronttrack.cli", "run", str(scene),
-                                "--json", str(out)], stderr=subprocess.PIPE, text=True)
+                                "--json", str(out)], stderr=subprocess.PIPE, text=True,
+                               preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
     first = process.stderr.readline()  # a progress line: the solve is under way
     process.send_signal(signal.SIGINT)
     rest = process.communicate(timeout=60)[1]
