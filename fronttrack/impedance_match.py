@@ -230,10 +230,14 @@ def _through(state: State, transmitted: tuple, stack: list[Material], release: s
 
 def _row(layer: int | str, material: Material, state: State, waves: tuple,
          reflected: ReflectedWave | None, method: str) -> MatchRow:
-    """A row for the state behind the single shock in ``waves``."""
-    (shock,) = waves
+    """A row for the state behind the waves into the layer, led by a shock: one shock, or a
+    detonation and the Taylor wave behind it (an explosive struck or striking), whose
+    speed is the detonation's."""
+    shock = waves[0] if waves else None
     if not isinstance(shock, Shock):
-        raise TypeError(f"{material.name}: expected a shock into the layer, got {shock!r}")
+        raise MatchError(f"{material.name}: the waves into this layer are not led by a shock "
+                         f"(an impedance match reports shocked states; `wavediagram run` "
+                         f"follows any wave)")
     ahead = shock.ahead
     return MatchRow(
         layer=layer, material=material.name, sigma=state.sigma, u=state.u, rho=state.rho,
@@ -247,13 +251,17 @@ def _reflection(material: Material, solution: RiemannSolution) -> ReflectedWave 
     """The exact reflected wave of an interface problem (``None`` if there is none)."""
     if not solution.left_waves:
         return None
-    (wave,) = solution.left_waves
+    waves = solution.left_waves
+    wave = waves[0]  # the leading one (a family of several: its first and last waves)
     behind = solution.left_star
     common = dict(compressive=behind.sigma > wave.ahead.sigma, sigma=behind.sigma, u=behind.u,
                   rho=behind.rho, temperature=material.temperature(behind.v, behind.e))
-    if isinstance(wave, Fan):
-        return ReflectedWave("fan", speed=None, head_speed=wave.head_speed,
-                             tail_speed=wave.tail_speed, **common)
+    if any(isinstance(w, Fan) for w in waves):
+        last = waves[-1]
+        return ReflectedWave("fan", speed=None,
+                             head_speed=wave.head_speed if isinstance(wave, Fan) else wave.speed,
+                             tail_speed=last.tail_speed if isinstance(last, Fan) else last.speed,
+                             **common)
     return ReflectedWave("shock", speed=wave.speed, head_speed=None, tail_speed=None, **common)
 
 

@@ -212,3 +212,19 @@ def test_bad_velocity(velocity):
 def test_empty_stack():
     with pytest.raises(ValueError, match="at least one layer"):
         impedance_match(get("Cu"), 1000.0, [])
+
+
+def test_an_explosive_flyer_or_layer_detonates_and_is_matched():
+    """An explosive striking copper, or struck by it, detonates at once: the waves into
+    it are the CJ detonation and its Taylor wave (below p_CJ), so its row reports the
+    state behind both and the detonation's speed, and the stresses still match across
+    every contact (found by a new user: this was an internal error)."""
+    explosive, copper = get("PBX9501"), get("Cu")
+    detonation = explosive.cj_state(explosive.reference_state())
+    rows = impedance_match(explosive, 500.0, [copper])
+    assert rows[0].shock_speed == pytest.approx(-detonation.speed, rel=1e-12)
+    assert rows[0].sigma == pytest.approx(rows[1].sigma, rel=1e-12)
+    assert 0.0 < rows[1].sigma < detonation.state.sigma
+    rows = impedance_match(copper, 2000.0, [explosive, copper])
+    assert rows[1].shock_speed == pytest.approx(detonation.speed, rel=1e-12)
+    assert rows[1].reflected is not None and rows[2].sigma > rows[1].sigma
