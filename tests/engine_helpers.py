@@ -101,3 +101,13 @@ def impedance_of(region):
 
 def region_states(solution, layer):
     return np.array([[r.state.sigma, r.state.u] for r in solution.regions if r.layer == layer])
+
+
+def assert_wave_jumps(shock, rho0: float, tol: float = 1e-12) -> None:
+    """Mass, momentum and Rankine–Hugoniot energy across one ``Shock`` of a material of
+    reference density ``rho0``, each to ``tol`` of its jump."""
+    a, b, u = shock.ahead, shock.behind, shock.speed
+    assert abs(rho0 * u * (b.u - a.u) - (b.sigma - a.sigma)) <= tol * abs(b.sigma - a.sigma)
+    assert abs(u * (b.v - a.v) * rho0 + (b.u - a.u)) <= tol * abs(b.u - a.u)
+    de = 0.5 * (a.sigma + b.sigma) * (a.v - b.v)
+    assert abs((b.e - a.e) - de) <= tol * abs(de)
