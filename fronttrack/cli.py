@@ -210,7 +210,9 @@ def _solve(scene, quiet: bool):
               f"{stats['fronts']} fronts, "
               f"{len(solution.spalls)} spall planes, solved in {stats['solve_time']:.3g} s "
               f"(release: {report['release']}, {report['dropped_waves']} waves below "
-              f"{report['negligible_stress']:.3g} Pa dropped)", file=sys.stderr)
+              f"{report['negligible_stress']:.3g} Pa dropped, {report['coalesced_fronts']} "
+              f"pairs of fronts closer than {report['coalesce_length'] * 1e6:.3g} um "
+              f"coalesced)", file=sys.stderr)
         balance = report["balance"]
         if balance["momentum_error"] is not None and balance["energy_error"] is not None:
             print(f"balance: momentum {balance['momentum_error']:.2g} of its content, energy "

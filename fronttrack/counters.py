@@ -29,7 +29,9 @@ class Counters:
     tension their equation of state carries; ``suppressed_spalls`` and
     ``suppressed_tension`` (Pa): fractures not made because
     they fell inside an earlier fracture zone or spacing, and the largest tension so
-    carried.
+    carried; ``coalesced``: pairs of fronts made one because they ran closer than the
+    records resolve (``fronttrack.coalesce``), with the momentum (kg/(m^2 s), absolute
+    sum) and energy (J/m^2, signed: never positive) their strips moved.
     """
 
     events: int = 0
@@ -45,3 +47,6 @@ class Counters:
     unresolved_contacts: int = 0
     suppressed_spalls: int = 0
     suppressed_tension: float = 0.0
+    coalesced: int = 0
+    coalesced_momentum: float = 0.0
+    coalesced_energy: float = 0.0

@@ -31,7 +31,7 @@ import time
 from characteristics.isentrope import IsentropeTables
 from materials import State, WavediagramError
 
-from . import initiation, interactions, outgoing, spall, zones
+from . import coalesce, initiation, interactions, outgoing, spall, zones
 from .counters import Counters
 from .fronts import UNKNOWN, Front, Region, inside_fan
 from .kinds import FrontKind, Release
@@ -87,6 +87,7 @@ class Engine:
         self.tables = IsentropeTables(self.resolution.negligible)
         self.signal_speed = signal_speed(scene, self.resolution.stress_scale)
         self.head: Front | None = None
+        self.coalesce_budget: tuple[float, float] | None = None  # fronttrack.coalesce
 
     # --- ids and objects ------------------------------------------------------------
     def next_front_id(self) -> int:
@@ -404,6 +405,7 @@ class Engine:
                     x, middle)
         if middle is not None and middle.kind == FrontKind.GAP:
             self.push_gap_closure(middle)
+        coalesce.coalesce_around(self, items, t)
         self.events.append(EventRecord(
             t=t, x=x, kind=kind, incoming=[f.id for f in incoming],
             outgoing=[f.id for f in items if not f.is_site],

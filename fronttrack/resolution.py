@@ -67,10 +67,11 @@ NEGLIGIBLE_FRACTION = 1e-6
 NEGLIGIBLE_STEP_FRACTION = 1e-3
 """In a scene with fans the negligible wave is at least this fraction of the step."""
 
-NEGLIGIBLE_SPLIT_FRACTION = 1e-3
+NEGLIGIBLE_SPLIT_FRACTION = 1e-4
 """In a scene with elastic–plastic solids the negligible wave is at least this fraction
 of the stress scale: there every interaction splits waves into an elastic and a
-plastic part and their number grows geometrically."""
+plastic part, and the weakest parts are not worth an event (the trains they form are
+coalesced, ``fronttrack.coalesce``)."""
 
 
 @dataclass(frozen=True)
@@ -85,7 +86,10 @@ class Resolution:
     dropped (Pa); ``length``: the stack's length (m) and ``x_tol`` the distance below
     which two fronts meet at one point; ``release``: the unloading path;
     ``negligible_velocity``: the velocity jump (m/s) below which a wave whose stress
-    jump is negligible is dropped.
+    jump is negligible is dropped; ``coalesce_length``: the resolution length (m) of
+    the records, below which two fronts of one family become one
+    (``fronttrack.coalesce``; by default the record tolerance's fraction of the stress
+    scale times the stack's length: 15 um for a 15 mm stack at 1e-3).
     """
 
     stress_scale: float
@@ -100,6 +104,7 @@ class Resolution:
     x_tol: float
     release: Release
     makes_fans: bool
+    coalesce_length: float = 0.0
 
     def report(self) -> dict:
         """The resolution as the ``accuracy`` section of a solution reports it."""
@@ -116,6 +121,7 @@ class Resolution:
                                        if self.makes_fans else 0.0),
             "negligible_stress": self.negligible,
             "negligible_velocity": self.negligible_velocity,
+            "coalesce_length": self.coalesce_length,
         }
 
     def is_negligible(self, stress_jump: float, velocity_jump: float) -> bool:
@@ -155,7 +161,9 @@ def resolve(scene: Scene, states: list[State]) -> Resolution:
                       negligible_velocity=negligible * velocity_ratio,
                       stress_tolerance=stress_tol, velocity_tolerance=velocity_tol,
                       negligible=negligible, length=length, x_tol=1e-10 * length,
-                      release=release, makes_fans=makes_fans)
+                      release=release, makes_fans=makes_fans,
+                      coalesce_length=(acc.coalesce_length if acc.coalesce_length is not None
+                                       else stress_tol / scale * length))
 
 
 def _step(scene: Scene, scale: float, stress_tol: float) -> tuple[float, str]:

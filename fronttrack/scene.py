@@ -247,10 +247,14 @@ class Accuracy:
     equations of state); ``None`` leaves it to the fracture zone the threshold model
     predicts.  ``contact_resolution`` (m): an entropy contact born closer than this to
     the neighbouring contact is merged like a negligible one (counted in the report);
-    0, the default, keeps every one.  ``estimate_error``: run the scene again at half the
-    characteristic step and report the estimated error of the records
-    (``fronttrack.error_estimate``) when it has fans.  ``max_seconds`` (s): stop the run
-    after this much wall-clock time and return the solution up to the time reached,
+    0, the default, keeps every one.  ``coalesce_length`` (m): the resolution length of
+    the records: two waves of one family moving at one speed, or two contacts, closer
+    than this become one front, and weak ones farther apart too while the weaker jump
+    times the distance stays small (``fronttrack.coalesce``); ``None`` takes the
+    tolerance's fraction of the stack's length, 0 keeps every front. ``estimate_error``: run
+    the scene again at half the characteristic step and report the estimated error of the
+    records (``fronttrack.error_estimate``) when it has fans. ``max_seconds`` (s): stop the
+    run after this much wall-clock time and return the solution up to the time reached,
     saying so in ``stats["stopped"]``; ``None`` (the default) runs to ``t_end``.
     Quantities are SI numbers or strings with units.
     """
@@ -265,6 +269,7 @@ class Accuracy:
     max_events: int = 200_000
     spall_spacing: float | str | None = None
     contact_resolution: float | str = 0.0
+    coalesce_length: float | str | None = None
     estimate_error: bool = False
     max_seconds: float | None = None
 
@@ -300,6 +305,7 @@ _ACCURACY_QUANTITIES = (("stress_tolerance", "stress", ">"),
                         ("negligible_stress", "stress", ">="),
                         ("spall_spacing", "length", ">="),
                         ("contact_resolution", "length", ">="),
+                        ("coalesce_length", "length", ">="),
                         ("max_seconds", "time", ">"))
 """Dimensional fields of ``Accuracy``: name, dimension, and the bound on their value."""
 

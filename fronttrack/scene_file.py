@@ -10,7 +10,7 @@ file reads as a lab notebook and converts to the SI ``Scene`` of
                             # rays_per_fan or characteristic_step (overrides),
                             # negligible_stress, release, entropy_contacts,
                             # max_events, spall_spacing, contact_resolution,
-                            # estimate_error
+                            # coalesce_length, estimate_error
     [materials.MyPMMA]      # inline material: model and its fields with units
     model = "mie-gruneisen"
     rho0 = "1186 kg/m3"
@@ -85,7 +85,7 @@ _PROBE_KEYS = ("name", "at", "kind", "side", "window")
 _ACCURACY_KEYS = ("rays_per_fan", "stress_tolerance", "velocity_tolerance",
                   "characteristic_step", "negligible_stress", "release",
                   "entropy_contacts", "max_events", "spall_spacing", "contact_resolution",
-                  "estimate_error", "max_seconds")
+                  "coalesce_length", "estimate_error", "max_seconds")
 _SPALL_KEYS = ("criterion", "threshold", "exponent", "damage", "incubation_time", "stations")
 _SPALL_CRITERIA = ("tuler-butcher", "incubation")
 _BOUNDARY_DIMENSION = {"velocity": "velocity", "stress": "stress"}
@@ -432,6 +432,8 @@ def _accuracy(table: dict[str, Any]) -> Accuracy:
         contact_resolution=_optional_quantity(table, "contact_resolution", "length",
                                               "accuracy.contact_resolution",
                                               defaults.contact_resolution),
+        coalesce_length=_optional_quantity(table, "coalesce_length", "length",
+                                           "accuracy.coalesce_length", None),
         estimate_error=_typed(table, "estimate_error", bool, defaults.estimate_error),
         max_seconds=_optional_quantity(table, "max_seconds", "time", "accuracy.max_seconds",
                                        defaults.max_seconds),

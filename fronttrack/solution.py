@@ -239,6 +239,9 @@ class Solution:
             "cavitations": counters.cavitations,
             "contact_resolution": acc.contact_resolution,
             "contacts_below_resolution": counters.unresolved_contacts,
+            "coalesced_fronts": counters.coalesced,
+            "coalesced_momentum": counters.coalesced_momentum,
+            "coalesced_energy": counters.coalesced_energy,
             "spall_spacing": acc.spall_spacing,
             "fracture_zones": [{"layer": z.layer, "x_lo": z.x_lo, "x_hi": z.x_hi, "t": z.t}
                                for z in engine.fracture_zones],
