@@ -139,7 +139,10 @@ def window_record(solution, name: str) -> WindowRecord:
     interface's and the far face's records, where both are linear: exact
     wherever those records are.
     """
-    probe = next(p for p in solution.scene.probes if p.name == name)
+    probe = next((p for p in solution.scene.probes if p.name == name), None)
+    if probe is None:
+        names = ", ".join(repr(p.name) for p in solution.scene.probes) or "none"
+        raise SceneError(f"probe: no probe named {name!r} (probes: {names})")
     if probe.window is None:
         raise SceneError(f"probe[{name}].window: the probe has no optical window")
     _, far = window_layer(solution.scene, probe)
