@@ -25,6 +25,7 @@ import csv
 import itertools
 import json
 import math
+import numbers
 import sys
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
@@ -269,12 +270,19 @@ def sweep(scene: Scene, parameters: dict[str, Sequence], outputs: Sequence,
     -------
     Table
         A row per combination (the last parameter varying fastest).
+
+    Raises
+    ------
+    SceneError
+        Before any run: a path that names no field, values that are not a list, a
+        value its field cannot take, or an output no run could evaluate.
     """
     names = list(parameters)
     for name in names:  # an unknown path or a value no run could take fails before any run
         values = parameters[name]
         if isinstance(values, (str, bytes)) or not isinstance(values, Sequence | np.ndarray):
-            raise SceneError(f"parameters[{name}]: expected a list of values, got {values!r}")
+            raise SceneError(f"parameters[{name}]: expected a list of values, "
+                             f"got {values!r:.60}")
         field_value(scene, name)
         for value in values:
             with_field(scene, name, value)
@@ -311,7 +319,7 @@ def monte_carlo(scene: Scene, uncertainties: dict[str, float | str], outputs: Se
     ``numpy.random.default_rng(seed)``; with zero uncertainty every sample is the
     scene itself and the quantiles are its deterministic outputs.
     """
-    if isinstance(samples, bool) or not isinstance(samples, int) or samples < 1:
+    if isinstance(samples, bool) or not isinstance(samples, numbers.Integral) or samples < 1:
         raise SceneError(f"samples: must be an integer >= 1, got {samples!r}")
     paths = list(uncertainties)
     nominal = np.array([_numeric(scene, p) for p in paths])
