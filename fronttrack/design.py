@@ -20,6 +20,7 @@ with units; results are SI.
 from __future__ import annotations
 
 import dataclasses
+import numbers
 from dataclasses import dataclass
 
 import numpy as np
@@ -54,7 +55,8 @@ def velocity_for(target: float | str, flyer: Material | str, stack: list,
     Raises
     ------
     SceneError
-        ``quantity`` unknown, ``target`` not > 0, or not reachable below 100 km/s.
+        ``quantity`` unknown, ``target`` not > 0, ``stack`` empty, ``layer`` not an
+        index of it, or the target not reachable below 100 km/s.
     """
     if quantity not in _QUANTITIES:
         raise SceneError(f"quantity: must be one of {tuple(_QUANTITIES)}, got {quantity!r}")
@@ -62,7 +64,9 @@ def velocity_for(target: float | str, flyer: Material | str, stack: list,
     if not goal > 0.0:
         raise SceneError(f"target: must be > 0, got {goal!r}")
     stack = [stack] if isinstance(stack, (str, Material)) else list(stack)
-    row = layer + 1 if layer >= 0 else len(stack) + 1 + layer
+    if not stack:
+        raise SceneError("stack: needs at least one layer")
+    row = _layer_index(layer, len(stack), "layer") + 1
 
     def excess(velocity: float) -> float:
         return getattr(match(flyer, velocity, stack, release=release)[row], quantity) - goal
@@ -163,11 +167,14 @@ def thickness_for_window(scene: Scene, at: str, duration: float | str, layer: in
     Raises
     ------
     SceneError
-        Another wave closes the window sooner whatever the thickness, or the run
-        ends before a window of ``duration`` could be seen.
+        ``duration`` not > 0 or ``layer`` not a layer index; another wave closes the
+        window sooner whatever the thickness, or the run ends before a window of
+        ``duration`` could be seen.
     """
     wanted = to_si(duration, "time", "duration")
-    current = scene.layers[layer].thickness
+    if not wanted > 0.0:
+        raise SceneError(f"duration: must be > 0 s, got {wanted!r}")
+    current = scene.layers[_layer_index(layer, len(scene.layers), "layer")].thickness
     top = 100.0 * current if largest is None else to_si(largest, "length", "largest")
 
     def shortfall(thickness: float) -> float:
@@ -207,9 +214,15 @@ def flyer_for_spall(scene: Scene, depth: float | str, flyer: int = 0, target: in
     Raises
     ------
     SceneError
-        No thickness up to the target's puts the first fracture at ``depth``.
+        ``flyer`` or ``target`` not a layer index (or the same layer), ``depth`` not
+        inside the target, or no thickness up to the target's puts the first fracture
+        at ``depth``.
     """
     wanted = to_si(depth, "length", "depth")
+    flyer = _layer_index(flyer, len(scene.layers), "flyer")
+    target = _layer_index(target, len(scene.layers), "target")
+    if flyer == target:
+        raise SceneError(f"target: must be another layer than the flyer (both {flyer})")
     target_layer = scene.layers[target]
     if not 0.0 < wanted < target_layer.thickness:
         raise SceneError(f"depth: must be inside the target (0 to "
@@ -231,6 +244,16 @@ def flyer_for_spall(scene: Scene, depth: float | str, flyer: int = 0, target: in
     low, high = _bracket(miss, guess, target_layer.thickness)
     return float(brentq(miss, low, high, xtol=tolerance * target_layer.thickness,
                         rtol=8.9e-16))
+
+
+def _layer_index(index, count: int, field: str) -> int:
+    """``index`` (Python style: negative counts from the end) of one of ``count`` layers,
+    as a non-negative int; raises ``SceneError`` naming ``field`` and the range."""
+    if isinstance(index, bool) or not isinstance(index, numbers.Integral) \
+            or not -count <= index < count:
+        raise SceneError(f"{field}: must be a layer index from {-count} to {count - 1}, "
+                         f"got {index!r}")
+    return int(index) % count
 
 
 def _sound_speed(material: Material) -> float:
@@ -288,7 +311,7 @@ def window_choice(flyer: Material | str, velocity: float | str, sample: Material
     (``fronttrack.windows``).
     """
     choices = []
-    for candidate in windows:
+    for candidate in [windows] if isinstance(windows, (str, OpticalWindow)) else windows:
         optics: OpticalWindow = optical_window(candidate)
         rows = match(flyer, velocity, [sample, optics.material], release=release)
         sample_row, window_row = rows[1], rows[2]

@@ -51,9 +51,7 @@ def material_fields(material: Material) -> dict[str, Any]:
 def with_material_field(material: Material, field: str, value: Any) -> Material:
     """``material`` rebuilt with ``field`` set to ``value`` (SI or a string with a unit)."""
     fields = material_fields(material)
-    if field not in fields or field == "name":
-        raise SceneError(f"material.{field}: not a field of {material.name!r} (fields: "
-                         f"{', '.join(f for f in fields if f != 'name')})")
+    _material_field(material, field, f"material.{field}")
     if isinstance(value, str) or field in FIELD_DIMENSIONS:
         value = to_si(value, FIELD_DIMENSIONS.get(field, "dimensionless"), f"material.{field}")
     try:
@@ -71,17 +69,34 @@ def field_value(scene: Scene, path: str) -> Any:
         layer = scene.layers[_index(scene, rest[0], path)]
         if len(rest) == 2:
             return getattr(layer, _layer_field(rest[1], path))
-        return material_fields(layer.material)[rest[2]]
+        return _material_field(layer.material, rest[2], path)
     if head == "material" and len(rest) == 2:
         layer = next((lay for lay in scene.layers if lay.material.name == rest[0]), None)
         if layer is None:
             raise SceneError(f"{path}: no layer is made of {rest[0]!r}")
-        return material_fields(layer.material)[rest[1]]
+        return _material_field(layer.material, rest[1], path)
     if head in ("left", "right") and rest == ["value"]:
         return getattr(scene, head).value_at(0.0)
     if head == "accuracy" and len(rest) == 1:
-        return getattr(scene.accuracy, rest[0])
+        return getattr(scene.accuracy, _accuracy_field(scene, rest[0], path))
     raise SceneError(f"{path}: not a scene field (see fronttrack.parameters for the paths)")
+
+
+def _material_field(material: Material, name: str, path: str) -> Any:
+    """The field ``name`` of ``material`` (SI); raises ``SceneError`` naming ``path``."""
+    fields = material_fields(material)
+    if name not in fields or name == "name":
+        raise SceneError(f"{path}: not a field of {material.name!r} (fields: "
+                         f"{', '.join(f for f in fields if f != 'name')})")
+    return fields[name]
+
+
+def _accuracy_field(scene: Scene, name: str, path: str) -> str:
+    """``name`` if it is a field of ``Accuracy``; raises ``SceneError`` naming ``path``."""
+    names = [f.name for f in dataclasses.fields(scene.accuracy)]
+    if name not in names:
+        raise SceneError(f"{path}: not a field of accuracy (fields: {', '.join(names)})")
+    return name
 
 
 def with_field(scene: Scene, path: str, value: Any) -> Scene:
@@ -121,11 +136,10 @@ def with_field(scene: Scene, path: str, value: Any) -> Scene:
             return dataclasses.replace(scene, **{head: Boundary(getattr(scene, head).kind,
                                                                 value)})
     if head == "accuracy" and len(rest) == 1:
+        name = _accuracy_field(scene, rest[0], path)
         with located("accuracy", "accuracy"):
-            if rest[0] not in {f.name for f in dataclasses.fields(scene.accuracy)}:
-                raise SceneError(f"{path}: not a field of accuracy")
             return dataclasses.replace(
-                scene, accuracy=dataclasses.replace(scene.accuracy, **{rest[0]: value}))
+                scene, accuracy=dataclasses.replace(scene.accuracy, **{name: value}))
     raise SceneError(f"{path}: not a scene field (see fronttrack.parameters for the paths)")
 
 

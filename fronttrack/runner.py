@@ -16,6 +16,7 @@ from . import balance, fits
 from .damage import run_with_damage
 from .engine import Engine
 from .error_estimate import estimate_error
+from .errors import SceneError
 from .scene import Scene
 from .solution import Solution
 
@@ -31,6 +32,9 @@ def run(scene: Scene, progress=None) -> Solution:
     With ``accuracy.max_seconds`` the solution may end before ``t_end``; its
     ``stats["stopped"]`` then says when and why.
     """
+    if not isinstance(scene, Scene):
+        raise SceneError(f"scene: expected a Scene (ft.load_scene reads a scene file), "
+                         f"got {scene!r:.60}")
     limit = scene.accuracy.max_seconds
     deadline = None if limit is None else time.perf_counter() + limit
     if scene.spall_criterion is not None:

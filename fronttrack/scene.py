@@ -15,6 +15,7 @@ whole scene (probes inside the stack, unique names).  Scenes read from TOML
 from __future__ import annotations
 
 import math
+from collections.abc import Iterable
 from dataclasses import dataclass, field
 
 from materials import Material, MaterialError, State, StateOutOfRangeError
@@ -379,8 +380,12 @@ class Scene:
     spall_criterion: SpallCriterion | None = None
 
     def __post_init__(self) -> None:
-        _set(self, "layers", tuple(self.layers))
-        _set(self, "probes", tuple(self.probes))
+        for name, field_name, kind in (("layers", "layer", Layer), ("probes", "probe", Probe)):
+            parts = getattr(self, name)
+            if isinstance(parts, (str, bytes, kind)) or not isinstance(parts, Iterable):
+                raise SceneError(f"{field_name}: expected a list of {kind.__name__}, "
+                                 f"got {parts!r:.60}")
+            _set(self, name, tuple(parts))
         _set(self, "t_end", to_si(self.t_end, "time", "t_end"))
         self.validate()
 

@@ -32,9 +32,11 @@ import numpy as np
 from characteristics.reconstruct import Cell, Crossing, knots
 from materials import State
 
+from .errors import SceneError
 from .fronts import UNKNOWN, FrontRecord, RegionRecord
 from .kinds import FrontKind
 from .numbering import region_numbers
+from .units import to_si
 from .windows import window_record
 
 
@@ -402,7 +404,10 @@ class Solution:
 
     def state_at(self, x: float, t: float) -> State:
         """State (stress Pa, velocity m/s, volume, energy) at ``(x, t)``, read continuously
-        inside simple waves and lattices (``characteristics.reconstruct``)."""
+        inside simple waves and lattices (``characteristics.reconstruct``).  ``x`` is
+        anything ``station`` takes, ``t`` (s, or a string with a unit) lies in
+        ``[0, t_end]``; otherwise ``SceneError``."""
+        x, t = self.station(x), self._instant(t)
         profile = self._profile_near(x, t)
         if profile is None:
             return self._region_state(self._region_id_at(x, t))
@@ -435,16 +440,18 @@ class Solution:
         return times, self._segments()["lineage"][index]
 
     def station(self, at) -> float:
-        """Lagrangian position (m) of a probe location: ``"left"``, ``"right"``, metres,
-        or the name of one of the scene's probes."""
-        if at == "left":
-            return 0.0
-        if at == "right":
-            return self.scene.length
-        probe = next((p for p in self.scene.probes if isinstance(at, str) and p.name == at), None)
-        if probe is not None:
-            return self.station(probe.at)
-        return min(max(float(at), 0.0), self.scene.length)
+        """Lagrangian position (m) of ``at`` in the scene (``station``)."""
+        return station(self.scene, at)
+
+    def _instant(self, t) -> float:
+        """``t`` (s, or a string with a unit) checked to lie in ``[0, t_end]`` (with a
+        rounding allowance of 1e-12 of ``t_end``); raises ``SceneError`` naming ``t``."""
+        t_end = self.scene.t_end
+        value = to_si(t, "time", "t")
+        if not -1e-12 * t_end <= value <= (1.0 + 1e-12) * t_end:
+            raise SceneError(f"t: {value * 1e6:.6g} us is outside the run "
+                             f"(0 to {t_end * 1e6:.6g} us)")
+        return min(max(value, 0.0), t_end)
 
     def history(self, at) -> History:
         """The record at a station: ``at`` is ``"left"``, ``"right"``, a probe name or X (m).
@@ -548,6 +555,7 @@ class Solution:
     def profile(self, t: float) -> History:
         """The profile at time ``t`` (s) along Lagrangian X (the ``History`` coordinate is X,
         m): continuous inside simple waves and lattices, a jump at shocks and contacts."""
+        t = self._instant(t)
         key = ("profile", t)
         if key not in self._cache:
             self._cache[key] = self._build_profile(t)
@@ -792,6 +800,33 @@ def _state_in(record: History, x: float) -> State:
 
 def _finite_or_none(value: float):
     return value if math.isfinite(value) else None
+
+
+def station(scene, at) -> float:
+    """Lagrangian position (m) of a probe location in ``scene``: ``"left"``, ``"right"``,
+    the name of one of its probes, or X (metres, or a string with a unit: ``"2 mm"``).
+
+    Raises ``SceneError`` for a name that is neither a probe nor a length, and for an
+    X outside the stack (beyond a rounding allowance of 1e-12 of its length).
+    """
+    if at == "left":
+        return 0.0
+    if at == "right":
+        return scene.length
+    probe = next((p for p in scene.probes if isinstance(at, str) and p.name == at), None)
+    if probe is not None:
+        return station(scene, probe.at)
+    length = scene.length
+    try:
+        x = to_si(at, "length", "at")
+    except SceneError:
+        names = ", ".join(repr(p.name) for p in scene.probes) or "none"
+        raise SceneError(f"at: expected 'left', 'right', a probe name (probes: {names}) "
+                         f"or X such as 1e-3 or \"1 mm\", got {at!r}") from None
+    if not -1e-12 * length <= x <= (1.0 + 1e-12) * length:
+        raise SceneError(f"at: X = {x * 1e3:.6g} mm is outside the stack "
+                         f"(0 to {length * 1e3:.6g} mm)")
+    return min(max(x, 0.0), length)
 
 
 def _window_fields(solution: Solution, probe) -> dict:

@@ -25,6 +25,7 @@ import csv
 import itertools
 import json
 import math
+import numbers
 import sys
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
@@ -40,7 +41,7 @@ from .errors import SceneError
 from .parameters import field_value, portable, restored, with_field
 from .runner import run
 from .scene import Scene
-from .solution import Solution
+from .solution import Solution, station
 from .units import to_si
 
 BACKENDS = ("serial", "processes", "dask")
@@ -174,10 +175,10 @@ def run_points(scene: Scene, assignments: Sequence[dict[str, Any]], outputs: Seq
     """
     if backend not in BACKENDS:
         raise SceneError(f"backend: must be one of {BACKENDS}, got {backend!r}")
-    outputs = list(outputs)
+    outputs = [outputs] if isinstance(outputs, str) or callable(outputs) else list(outputs)
     for output in outputs:
         if isinstance(output, str):
-            check_output(output)
+            check_output(output, scene)
     data = portable(scene)
     tasks = [(data, dict(a), outputs) for a in assignments]
     progress = progress if progress is not None else _terminal_progress()
@@ -198,10 +199,18 @@ def run_points(scene: Scene, assignments: Sequence[dict[str, Any]], outputs: Seq
     return table
 
 
-def check_output(output: str) -> None:
-    """Raise ``SceneError`` now for an output name no run could evaluate."""
+def check_output(output: str, scene: Scene | None = None) -> None:
+    """Raise ``SceneError`` now for an output name no run could evaluate (with ``scene``,
+    also for a ``NAME:PROBE`` whose probe is not a station of it)."""
     name, _, probe = output.partition(":")
-    if (probe and name in PROBE_OUTPUTS) or (not probe and name in OUTPUTS):
+    if probe and name in PROBE_OUTPUTS:
+        if scene is not None:
+            try:
+                station(scene, probe)
+            except SceneError as error:
+                raise SceneError(f"outputs: {output!r}: {error}") from None
+        return
+    if not probe and name in OUTPUTS:
         return
     raise SceneError(f"outputs: unknown output {output!r} (use one of "
                      f"{', '.join(OUTPUTS)}, or NAME:PROBE with NAME one of "
@@ -261,10 +270,22 @@ def sweep(scene: Scene, parameters: dict[str, Sequence], outputs: Sequence,
     -------
     Table
         A row per combination (the last parameter varying fastest).
+
+    Raises
+    ------
+    SceneError
+        Before any run: a path that names no field, values that are not a list, a
+        value its field cannot take, or an output no run could evaluate.
     """
     names = list(parameters)
-    for name in names:
-        field_value(scene, name)  # an unknown path fails before any run
+    for name in names:  # an unknown path or a value no run could take fails before any run
+        values = parameters[name]
+        if isinstance(values, (str, bytes)) or not isinstance(values, Sequence | np.ndarray):
+            raise SceneError(f"parameters[{name}]: expected a list of values, "
+                             f"got {values!r:.60}")
+        field_value(scene, name)
+        for value in values:
+            with_field(scene, name, value)
     combos = itertools.product(*(list(parameters[name]) for name in names))
     assignments = [dict(zip(names, combo, strict=True)) for combo in combos]
     return run_points(scene, assignments, outputs, backend, workers, client, progress)
@@ -298,8 +319,10 @@ def monte_carlo(scene: Scene, uncertainties: dict[str, float | str], outputs: Se
     ``numpy.random.default_rng(seed)``; with zero uncertainty every sample is the
     scene itself and the quantiles are its deterministic outputs.
     """
+    if isinstance(samples, bool) or not isinstance(samples, numbers.Integral) or samples < 1:
+        raise SceneError(f"samples: must be an integer >= 1, got {samples!r}")
     paths = list(uncertainties)
-    nominal = np.array([float(field_value(scene, p)) for p in paths])
+    nominal = np.array([_numeric(scene, p) for p in paths])
     sigma = np.array([_deviation(scene, p, uncertainties[p]) for p in paths])
     corr = np.eye(len(paths))
     for (a, b), r in (correlations or {}).items():
@@ -322,6 +345,14 @@ def monte_carlo(scene: Scene, uncertainties: dict[str, float | str], outputs: Se
                            for q in quantiles}
     return MonteCarlo(table=table, mean=stats_mean, std=stats_std, quantiles=stats_q,
                       failed=len(table.rows) - len(ran))
+
+
+def _numeric(scene: Scene, path: str) -> float:
+    """The value (SI) of the numeric field at ``path``; raises ``SceneError`` otherwise."""
+    value = field_value(scene, path)
+    if isinstance(value, bool) or not isinstance(value, int | float | np.number):
+        raise SceneError(f"uncertainties[{path}]: not a numeric field (value {value!r})")
+    return float(value)
 
 
 def _deviation(scene: Scene, path: str, value: float | str) -> float:

@@ -81,11 +81,14 @@ WINDOWS: dict[str, OpticalWindow] = {
                "index at 1550 nm (H. H. Li, J. Phys. Chem. Ref. Data 5, 329 (1976)); the "
                "0.1178 used before gave n0 = 1.3847, 0.002 too high"),
 }
-"""Windows with a cited fit, by name.  PMMA and sapphire are not listed: no fit of their
-index against density could be read in a source (Barker and Hollenbach, J. Appl. Phys. 41,
-4208 (1970) for PMMA and sapphire; Jones, Robinson and Gupta for c-cut sapphire) with the
-search tools available; give them as ``OpticalWindow`` with the coefficients of the
-source you use."""
+"""Windows with a cited fit, by name.  PMMA and sapphire are not listed: no coefficient of
+their index against density (or of their apparent-to-true velocity ratio) could be read
+in a source with the search tools available, in two searches (the second of 36 queries
+over web pages, documentation, code and issues): Barker and Hollenbach, J. Appl. Phys.
+41, 4208 (1970) (PMMA, fused silica, sapphire) and the a-axis sapphire study of Jones
+and Gupta, J. Appl. Phys. 90, 4990 (2001), were found by title and abstract only (the
+latter states that the index at 514.5 nm falls linearly with density, without the
+numbers).  Give them as ``OpticalWindow`` with the coefficients of the source you use."""
 
 
 def optical_window(window: str | OpticalWindow) -> OpticalWindow:
@@ -101,8 +104,9 @@ def optical_window(window: str | OpticalWindow) -> OpticalWindow:
             if window.lower() == name.lower():
                 return known
     raise SceneError(f"window: no refractive-index fit for {window!r} (cited fits: "
-                     f"{', '.join(WINDOWS)}); give an OpticalWindow(name, a, b, wavelength, "
-                     f"material, source) with the coefficients of n = a + b rho/rho0")
+                     f"{', '.join(WINDOWS)}); from Python, give an OpticalWindow(name, a, b, "
+                     f"wavelength, material, source) with the coefficients of "
+                     f"n = a + b rho/rho0")
 
 
 @dataclass(frozen=True)
@@ -139,7 +143,10 @@ def window_record(solution, name: str) -> WindowRecord:
     interface's and the far face's records, where both are linear: exact
     wherever those records are.
     """
-    probe = next(p for p in solution.scene.probes if p.name == name)
+    probe = next((p for p in solution.scene.probes if p.name == name), None)
+    if probe is None:
+        names = ", ".join(repr(p.name) for p in solution.scene.probes) or "none"
+        raise SceneError(f"probe: no probe named {name!r} (probes: {names})")
     if probe.window is None:
         raise SceneError(f"probe[{name}].window: the probe has no optical window")
     _, far = window_layer(solution.scene, probe)
