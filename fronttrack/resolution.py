@@ -89,7 +89,8 @@ class Resolution:
     jump is negligible is dropped; ``coalesce_length``: the resolution length (m) of
     the records, below which two fronts of one family become one
     (``fronttrack.coalesce``; by default the record tolerance's fraction of the stress
-    scale times the stack's length: 15 um for a 15 mm stack at 1e-3).
+    scale, at most ``DEFAULT_RECORD_FRACTION``, times the stack's length: 15 um for a
+    15 mm stack).
     """
 
     stress_scale: float
@@ -163,7 +164,8 @@ def resolve(scene: Scene, states: list[State]) -> Resolution:
                       negligible=negligible, length=length, x_tol=1e-10 * length,
                       release=release, makes_fans=makes_fans,
                       coalesce_length=(acc.coalesce_length if acc.coalesce_length is not None
-                                       else stress_tol / scale * length))
+                                       else min(stress_tol / scale, DEFAULT_RECORD_FRACTION)
+                                       * length))
 
 
 def _step(scene: Scene, scale: float, stress_tol: float) -> tuple[float, str]:
