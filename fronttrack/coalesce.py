@@ -21,13 +21,13 @@ most 1e-3 of the stress scale):
 - two contacts whose outer states ``L`` and ``R`` have a negligible stress and
   velocity difference;
 
-and ``d <= l``, or, for a weak pair that is not a pulse (two waves of one sign, or two
-contacts), ``w d <= VISIBILITY * tol * l`` with ``d <= REACH * l``, where ``w`` is the
-weaker front's strength (a wave's stress jump; a contact's offset of the yield
-stresses, ``Material.contact_reflection``).  A record at a station then sees a step of
-``w`` displaced by ``d / C`` in time: its L1-in-time error per passage, ``w d / C``, is
-held to ``VISIBILITY * tol * l / C``.  A compression and a release farther apart than
-``l`` are a pulse whose peak a record (and a spall criterion) reads: they are kept.
+and ``d <= l``, or, for a weak pair, ``w d <= VISIBILITY * tol * l`` with ``d <= REACH
+* l``, where ``w`` is the weaker front's strength (a wave's stress jump; a contact's
+offset of the yield stresses, ``Material.contact_reflection``). A record at a station
+then sees a step of ``w`` displaced by ``d / C`` in time: its L1-in-time error per
+passage, ``w d / C``, is held to ``VISIBILITY * tol * l / C``. A compression and a
+release farther apart than ``l`` are a pulse whose peak a record (and a spall
+criterion) reads: they are kept unless the pulse is weaker than ``tol``.
 
 **Conservation.**  The strip ``[x_a, x_b]`` that held ``M`` is shared between ``L`` and
 ``R`` at the point ``x*`` that keeps its energy ``rho0 (e + u^2/2) d`` exactly.  Where
@@ -104,11 +104,12 @@ def _coalesce(engine, a: Front, b: Front, t: float) -> Front | None:
         return None
     xa, xb = a.position(t), b.position(t)
     distance = xb - xa
-    if distance > res.coalesce_length and (
-            distance > REACH * res.coalesce_length or a.jump * b.jump < 0.0
-            or _weaker(a, b, left, middle, right, res.stress_scale) * distance
-            > VISIBILITY * _tolerance(res) * res.coalesce_length):
-        return None
+    if distance > res.coalesce_length:
+        weaker, tolerance = _weaker(a, b, left, middle, right, res.stress_scale), _tolerance(res)
+        pulse = a.jump * b.jump < 0.0
+        if distance > REACH * res.coalesce_length or (pulse and weaker > tolerance) or \
+                weaker * distance > VISIBILITY * tolerance * res.coalesce_length:
+            return None
     sl, sm, sr = left.state, middle.state, right.state
     rho0 = middle.material.rho0
     if a.kind == FrontKind.SHOCK:
