@@ -15,10 +15,11 @@ smoothly.
 Runs use a characteristic step of 5 GPa (p_CJ = 31.4 GPa) and drop waves below 0.1 GPa
 (a ringing elastic plate otherwise fills with ever weaker shocks); their balance is held
 to what those settings promise.  The plates are compared at a time when their velocity
-still rises by less than 3 % over the last fifth of the run (measured: the tamped plate
-reaches 2848 m/s at 16 us and the open-faced 1889 m/s at 10 us in longer runs, within
-1 % and 2.5 % of the values here), against Gurney within 5 %: the few per cent the model
-claims, plus the last few per cent of the approach.
+still rises by less than 3 % over the last fifth of the run, against Gurney within 5 %:
+the few per cent the model claims, plus the last few per cent of the approach.
+Measured: tamped 2848 m/s at 16 us (Gurney 2827, +0.7 %), open-faced 1849 m/s at 6 us
+(Gurney 1843, +0.3 %; a longer run reaches 1889 m/s at 10 us, +2.5 %), symmetric 2117
+m/s at 10 us (Gurney 2150, -1.5 %).
 """
 
 from __future__ import annotations
