@@ -16,6 +16,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from characteristics.products_table import fan_table
 from characteristics.simple_waves import discretise_fan
 from materials import Fan, State
 
@@ -143,7 +144,10 @@ def _fan_fronts(engine, fan: Fan, material, t, x, parent, direction,
     if table is not None and math.isfinite(fan.behind.v) \
             and not table.matches(fan.behind, engine.tables.tolerance):
         table = None
-    characteristics = discretise_fan(fan, material, res.step, table, res.velocity_step)
+    # detonation products: their own table places the characteristics (equal steps of
+    # stress and velocity towards vacuum); the cells keep none (no lattice, no reading)
+    own = fan_table(fan) if table is None and res.release == "isentrope" else None
+    characteristics = discretise_fan(fan, material, res.step, table or own, res.velocity_step)
     if len(characteristics) == 1 and parent is not None and parent.kind == FrontKind.RAY:
         fan_id, index, count = parent.fan, parent.ray_index, parent.ray_count
     else:

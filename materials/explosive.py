@@ -115,7 +115,11 @@ class Explosive(Material):
         self.products = products
         self.D_cj = None if D_cj is None else require_positive("D_cj", D_cj, name)
         self.p_cj = None if p_cj is None else require_positive("p_cj", p_cj, name)
-        self.spall_strength = math.inf
+        # products carry no tension (their isentropes end at vacuum, sigma = 0), and the
+        # unreacted explosive's small tensile strength is neglected: an interface of an
+        # explosive layer opens under any tension (a plate driven off its products flies
+        # free and the products expand into the gap)
+        self.spall_strength = 0.0
         self.cj_state(self.reference_state())  # raises if the products have no CJ point
 
     def phase(self, state: State) -> Material:
@@ -202,6 +206,7 @@ class Explosive(Material):
         lo, hi = products.hugoniot_volume_limit(a), v_a * (1.0 - 1e-12)
         f_lo, f_hi = tangency(lo), tangency(hi)
         if not (f_lo < 0.0 < f_hi):
+            self._no_cj_field(v_a)
             raise MaterialError(
                 f"{self.name}: the products' Hugoniot has no Chapman-Jouguet point (no "
                 f"Rayleigh line from {sigma_a / 1e9:.6g} GPa is tangent to it); check the "
@@ -215,6 +220,21 @@ class Explosive(Material):
         speed = (sigma - sigma_a) / (self.rho0 * u)
         return Detonation(speed=speed,
                           state=State(sigma=sigma, u=u, v=v, e=e, plastic_strain=BURNT))
+
+    def _no_cj_field(self, v_a: float) -> None:
+        """Raise naming the JWL field that makes the products' stress negative at the
+        explosive's own density (a term ``A (1 - omega/(R1 V)) exp(-R1 V)`` with ``R1 V <
+        omega`` pulls the whole Hugoniot below the state ahead), if one does."""
+        products, big_v = self.products, v_a * self.rho0
+        for coef, rate, field in ((products.A, products.R1, "R1"),
+                                  (products.B, products.R2, "R2")):
+            if coef > 0.0 and rate * big_v < products.omega \
+                    and products.stress(v_a, 0.0) <= 0.0:
+                raise MaterialError(
+                    f"{self.name}: the products' Hugoniot has no Chapman-Jouguet point: "
+                    f"{field} = {rate:g} makes the products' stress at the explosive's "
+                    f"density {products.stress(v_a, 0.0) / 1e9:.6g} GPa; {field} must be > "
+                    f"omega = {products.omega:g}")
 
     def overdriven_state(self, ahead: State, sigma: float, direction: int = 1) -> State:
         """The products state behind an overdriven detonation to stress ``sigma`` (Pa, at

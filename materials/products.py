@@ -29,28 +29,22 @@ The products expand to vacuum: ``sigma -> 0`` and ``e -> -q`` as ``V -> inf``.
 
 Riemann-invariant integral ``J = int rho0 C_L dv``: for the gamma law in closed form,
 ``J = 2 (c_start - c) / (Gamma - 1)`` with ``c = (v/v0) C_L`` the Eulerian sound speed;
-for JWL by Gauss–Legendre quadrature in ``y = V^(-omega/2)``, in which the integrand
-``rho0 C_L dv/dy`` is smooth on ``[0, y]`` (it tends to a constant as ``V -> inf``), so
-the integral to vacuum is a proper one.
+for JWL from a Chebyshev table of the integrand in ``y = V^(-omega/2)``, in which it is
+smooth on ``[0, y]`` (it tends to a constant as ``V -> inf``): one table per isentrope
+(``materials.products_isentrope``), so the integral to vacuum is two series evaluations.
 """
 
 from __future__ import annotations
 
+import functools
 import math
 
 import numpy as np
 
 from .base import Material, require_number, require_positive
 from .errors import MaterialError
-from .quadrature import unit_rule
+from .products_isentrope import ProductsIsentropeTable
 from .state import State
-
-_Y_PANEL = 0.02
-"""Width of a Gauss–Legendre panel in ``y = V^(-omega/2)``: the exponential terms change
-by a factor e over at least ~0.03 in ``y`` for the tabulated explosives (R1 <= 5, omega
->= 0.25), so 16 points a panel integrate them to rounding."""
-
-_Y_POINTS = 16
 
 
 class Products(Material):
@@ -184,33 +178,18 @@ class Products(Material):
         if self.is_gamma_law:
             # C_L = sqrt(v0 (1 + omega) omega rho0 K) V^-(1 + omega/2): J in closed form
             scale = math.sqrt(self.v0 * (1.0 + self.omega) * self.omega * self.rho0 * k)
-            return scale * 2.0 / self.omega * (self._y(start) - self._y(v))
-        return self._quadrature(k, self._y(start), self._y(v))
+            return scale * 2.0 / self.omega * (self.y(start) - self.y(v))
+        table = self.isentrope_table(k)
+        return table.phi(self.y(start)) - table.phi(self.y(v))
 
-    def _y(self, v: float) -> float:
+    @functools.lru_cache(maxsize=256)  # noqa: B019 -- a material lives as long as its runs
+    def isentrope_table(self, k: float) -> ProductsIsentropeTable:
+        """The Chebyshev table of the stress function on the isentrope ``K = k`` (J/kg)."""
+        return ProductsIsentropeTable(self, k)
+
+    def y(self, v: float) -> float:
         """``y = V^(-omega/2)``: 0 at vacuum."""
         return 0.0 if math.isinf(v) else (v * self.rho0) ** (-0.5 * self.omega)
-
-    def _quadrature(self, k: float, y_start: float, y_end: float) -> float:
-        """``int rho0 C_L dv`` from ``y_start`` to ``y_end`` along the isentrope ``K``.
-
-        With ``V = y^(-2/omega)``, ``rho0 dv = dV = -(2/omega) V^(1 + omega/2) dy``.
-        """
-        count = max(1, math.ceil(abs(y_end - y_start) / _Y_PANEL))
-        nodes, weights = unit_rule(_Y_POINTS)
-        edges = np.linspace(y_start, y_end, count + 1)
-        y = edges[:-1, None] + (edges[1:] - edges[:-1])[:, None] * nodes
-        y = np.where(y > 0.0, y, 1e-300)
-        big_v = y ** (-2.0 / self.omega)
-        c2 = self.v0 * (self.A * self.R1 * np.exp(-self.R1 * big_v)
-                        + self.B * self.R2 * np.exp(-self.R2 * big_v))
-        # the K term times V^(2 + omega) stays finite as V -> inf
-        jacobian = 2.0 / self.omega
-        integrand = -jacobian * np.sqrt(c2 * big_v ** (2.0 + self.omega)
-                                        + self.v0 * (1.0 + self.omega) * self.omega
-                                        * self.rho0 * k)
-        widths = (edges[1:] - edges[:-1])
-        return float(np.sum(widths * (integrand @ weights)))
 
     def __repr__(self) -> str:
         return f"Products({self.name!r})"
