@@ -108,7 +108,7 @@ import numpy as np
 from .base import Material, require_number, require_positive
 from .errors import MaterialError, NoSolutionError, StateOutOfRangeError
 from .mie_gruneisen import MieGruneisen
-from .quadrature import panel_edges, points_for, unit_rule
+from .path_table import PathTable
 from .roots import EPS as _EPS
 from .roots import bracketed_newton
 from .state import RIGHT, State
@@ -125,10 +125,9 @@ _WEAK_JUMP = 1e-5
 Hugoniot at the mid volume instead of the chord of the stored states."""
 
 _PANEL_FRACTION = 0.05
-_SINGULARITY_FRACTION = 0.4
-"""Quadrature panels and analyticity distance, as fractions of v0 (as in ``base``)."""
-
-_MAX_KNOWN_INTEGRALS = 16
+"""Widest panel of a path table, as a fraction of v0 (as in ``base``): the paths are
+analytic at least 0.4 v0 away, so the tables are exact to rounding
+(``materials.path_table``)."""
 
 _MAX_FAN_SPEEDS = 1024
 """Characteristic speeds of fan states a wave curve remembers (``characteristic_speed``
@@ -139,23 +138,26 @@ _PHI_SERIES = 0.1
 """Below this |z| the functions ``_phi`` use their Taylor series (16 terms: exact to
 rounding); above it the closed forms lose at most ~1e-15 to cancellation."""
 
+_PHI_TERMS = 16
+_PHI_POWERS = np.arange(_PHI_TERMS)
+_PHI_COEFFICIENTS = np.array([[1.0 / (math.factorial(n) * (n + 1 + order)) for order in (0, 1)]
+                              for n in range(_PHI_TERMS)])
+"""``int_0^1 t^order exp(z t) dt = sum_n z^n / (n! (n + 1 + order))``: the coefficients."""
+
 
 def _phi(z, order: int):
     """``int_0^1 t^order exp(z t) dt`` for ``order`` 0 or 1 (floats or arrays)."""
     if isinstance(z, float):
         if abs(z) <= _PHI_SERIES:
             total, term = 0.0, 1.0
-            for n in range(16):
+            for n in range(_PHI_TERMS):
                 total += term / (n + 1 + order)
                 term *= z / (n + 1)
             return total
         em1 = math.expm1(z)
         return em1 / z if order == 0 else (z * math.exp(z) - em1) / (z * z)
     z = np.asarray(z, dtype=float)
-    total, term = np.zeros_like(z), np.ones_like(z)
-    for n in range(16):
-        total += term / (n + 1 + order)
-        term = term * z / (n + 1)
+    total = np.power.outer(z, _PHI_POWERS) @ _PHI_COEFFICIENTS[:, order]
     big = np.abs(z) > _PHI_SERIES
     if np.any(big):
         zb = z[big]
@@ -479,9 +481,12 @@ class FinitePlasticWaveCurve(StressRange):
         self._v_max *= 1.0 - 1e-12
         self._limits: tuple[float, float] | None = None
         self._last: tuple[float, tuple] | None = None
+        self._last_root: tuple[float, tuple] | None = None
         self._last_states: tuple[float, tuple] | None = None
         self._fan_speeds: dict[float, float] = {}
-        self._integrals: dict[str, list] = {}
+        self._tables: dict[tuple[str, bool], PathTable] = {}
+        self._warm: dict[tuple, tuple[float, float, float]] = {}
+        self._ends: dict[tuple, tuple[float, float]] = {}
         g, r = mat.shear_modulus, self._radius
         if math.isfinite(r):
             tol = _SNAP * (r + abs(self._s_a)) + 1e-15 * g
@@ -497,7 +502,8 @@ class FinitePlasticWaveCurve(StressRange):
         # the two knees: the yield points reached by the elastic waves
         self._knee_up = self._knee_down = None
         self.yield_high, self.yield_low = math.inf, -math.inf
-        self._g_high = self._g_low = math.nan
+        self._g_high = math.nan
+        self._g_low_value: float | None = math.nan
         if self._v_high > self._v_min:
             self._knee_up = (self._start if self._v_high == v_a else
                              self._shock(self._start, self._v_high, radius=r, on_yield=+1))
@@ -506,14 +512,23 @@ class FinitePlasticWaveCurve(StressRange):
         if self._v_low < self._v_max:
             if self._v_low == v_a:
                 self._knee_down = self._start
-                self._g_low = 0.0
+                self._g_low_value = 0.0
             elif release == "hugoniot":
                 self._knee_down = self._shock(self._start, self._v_low, radius=r, on_yield=-1)
-                self._g_low = self._chord(self._start, self._knee_down)
+                self._g_low_value = self._chord(self._start, self._knee_down)
             else:
                 self._knee_down = self._elastic_path(self._v_low, on_yield=True)
-                self._g_low = -self._integral("elastic", self._v_low)
+                self._g_low_value = None   # the elastic fan's integral, when first asked
             self.yield_low = self._knee_down.sigma
+
+    @property
+    def _g_low(self) -> float:
+        """Velocity change (signed like the stress jump) across the elastic release to
+        the reverse-yield point (m/s), integrated on first use: a loading curve never
+        needs it."""
+        if self._g_low_value is None:
+            self._g_low_value = -self._integral("elastic", self._v_low)
+        return self._g_low_value
 
     # --- elementary branches ------------------------------------------------------------
     def _shock(self, start: _Point, v: float, radius: float, on_yield: int = 0) -> _Point:
@@ -603,46 +618,53 @@ class FinitePlasticWaveCurve(StressRange):
         return _Point(sigma, v, e_h + mat.shear_energy(s), knee.plastic_strain + dep,
                       knee.accumulated + abs(dep), -c * c / mat.v0**2, c)
 
-    def _path_c2(self, branch: str, nodes: np.ndarray) -> np.ndarray:
-        """Squared characteristic speeds at volumes ``nodes`` on a continuous branch."""
+    def _path_arrays(self, branch: str, nodes: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """``(sigma, C)`` at volumes ``nodes`` on a continuous branch (the closed forms of
+        ``_elastic_path`` and ``_plastic_path``, vectorised)."""
         mat = self.material
         eos = mat.eos
         if branch == "elastic":
             label = eos._isentrope_label(State(0.0, 0.0, self._v_a, self._e_h))
             e_h = (label - eos._f(nodes)) / eos._energy_factor(nodes)
-            return eos.sound_speed_squared(nodes, e_h) + 4.0 * mat.shear_modulus * mat.v0 / 3.0
-        knee, sign = (self._knee_down, -1) if branch == "plastic-down" else (self._knee_up, 1)
-        e_h, s = self._plastic_energy(knee, sign, nodes)
-        return (eos.sound_speed_squared(nodes, e_h) + mat.v0 * mat.plastic_modulus
-                + mat.v0**2 * mat._b * mat.heating_fraction * s)
+            s = self._s_a + 4.0 * mat.shear_modulus * (mat.strain(nodes) - self._eps_a) / 3.0
+            c2 = eos.sound_speed_squared(nodes, e_h) + 4.0 * mat.shear_modulus * mat.v0 / 3.0
+        else:
+            knee, sign = ((self._knee_down, -1) if branch == "plastic-down"
+                          else (self._knee_up, 1))
+            e_h, s = self._plastic_energy(knee, sign, nodes)
+            c2 = (eos.sound_speed_squared(nodes, e_h) + mat.v0 * mat.plastic_modulus
+                  + mat.v0**2 * mat._b * mat.heating_fraction * s)
+        if not np.min(c2) > 0.0:
+            raise StateOutOfRangeError(f"{mat.name}: the release path leaves the region "
+                                       f"of real sound speed near density "
+                                       f"{1.0 / float(np.max(nodes)):.6g}")
+        return eos._a(nodes) + mat._b * e_h + s - self._offset, np.sqrt(c2)
+
+    def _table(self, branch: str, expanding: bool) -> PathTable:
+        """The Chebyshev table of a continuous branch towards larger volumes
+        (``expanding``) or smaller ones from its start (the elastic branch runs both
+        ways from the ahead state, a plastic one only away from its yield point)."""
+        if branch == "elastic":
+            start = self._v_a
+            end = (min(self._v_low, self._v_max) if expanding
+                   else max(self._v_high, self._v_min))
+        elif branch == "plastic-down":
+            start, end = self._knee_down.v, self._v_max
+        else:
+            start, end = self._knee_up.v, self._v_min
+        key = (branch, expanding)
+        table = self._tables.get(key)
+        if table is None:
+            mat = self.material
+            table = PathTable(lambda nodes: self._path_arrays(branch, nodes), start, end,
+                              _PANEL_FRACTION * mat.v0, mat.rho0)
+            self._tables[key] = table
+        return table
 
     def _integral(self, branch: str, v: float) -> float:
-        """``int rho0 C dv`` from the branch's start to ``v`` (Gauss–Legendre on panels),
-        continued from the nearest volume already integrated on this curve."""
-        mat = self.material
-        starts = {"elastic": self._v_a,
-                  "plastic-down": self._knee_down.v if self._knee_down else math.nan,
-                  "plastic-up": self._knee_up.v if self._knee_up else math.nan}
-        known = self._integrals.setdefault(branch, [(starts[branch], 0.0)])
-        v_near, j_near = min(known, key=lambda k: abs(k[0] - v))
-        if v == v_near:
-            return j_near
-        panel = _PANEL_FRACTION * mat.v0
-        edges = ((v_near, v) if abs(v - v_near) <= panel
-                 else panel_edges(v_near, v, panel).tolist())
-        points = points_for(edges[1] - edges[0], _SINGULARITY_FRACTION * mat.v0)
-        nodes01, weights = unit_rule(points)
-        total = 0.0
-        for lo, hi in zip(edges[:-1], edges[1:], strict=True):
-            c2 = self._path_c2(branch, lo + (hi - lo) * nodes01)
-            if not np.min(c2) > 0.0:
-                raise StateOutOfRangeError(f"{mat.name}: the release path leaves the region "
-                                           f"of real sound speed near density {1.0 / hi:.6g}")
-            total += (hi - lo) * float(np.sqrt(c2) @ weights)
-        j = j_near + mat.rho0 * total
-        if len(known) < _MAX_KNOWN_INTEGRALS:
-            known.append((v, j))
-        return j
+        """``int rho0 C dv`` from the branch's start to ``v`` (m/s), from its table."""
+        expanding = branch == "plastic-down" or (branch == "elastic" and v > self._v_a)
+        return self._table(branch, expanding).integral(v)
 
     @staticmethod
     def _chord(a: _Point, b: _Point) -> float:
@@ -747,50 +769,74 @@ class FinitePlasticWaveCurve(StressRange):
             return "snap"
         return "plastic"
 
-    def _solve(self, sigma: float) -> tuple:
-        """``(behind point, knee point or None, kind)`` for a target stress (cached)."""
-        if self._last is not None and self._last[0] == sigma:
-            return self._last[1]
-        a, mat = self.ahead, self.material
-        region = self._region(sigma)
-        loading = sigma > a.sigma
-        kind = "shock" if loading or self.release == "hugoniot" else "fan"
-        if region == "snap":
-            result = (dataclasses.replace(self._knee_up if loading else self._knee_down,
-                                          sigma=float(sigma)), None, kind)
-            self._last = (sigma, result)
-            return result
-        plastic = region == "plastic"
+    def _path_function(self, branch: Callable[[float], _Point], kind: str,
+                       plastic: bool) -> Callable[[float], tuple[float, float]]:
+        """``v -> (sigma, dsigma/dv)`` on one branch: from the branch's table for a fan
+        where the table reaches (rounding-exact and far cheaper), else the closed form."""
+        if kind != "fan":
+            def closed(v):
+                p = branch(v)
+                return p.sigma, p.slope
+            return closed
+        table = self._table("plastic-down" if plastic else "elastic", expanding=True)
+
+        def tabulated(v):
+            if table.within(v):
+                return table.stress(v)
+            p = branch(v)
+            return p.sigma, p.slope
+        return tabulated
+
+    def _branch(self, loading: bool, plastic: bool, kind: str):
+        """``(lo, hi, branch)``: the volumes bracketing one branch and its closed form
+        ``v -> _Point``."""
+        mat, a = self.material, self.ahead
         if loading:
             v_lim = mat.hugoniot_volume_limit(a)
             if plastic:
-                lo, hi = v_lim, self._v_high
+                return v_lim, self._v_high, lambda v: self._loading(v)[0]
+            return (max(self._v_high, v_lim), self._v_a,
+                    lambda v: self._shock(self._start, v, self._radius))
+        lo, hi = (self._v_low, self._v_max) if plastic else (
+            self._v_a, min(self._v_max, self._v_low))
+        if kind == "shock":
+            return lo, hi, lambda v: self._release_shock(v)[0]
+        return lo, hi, lambda v: self._release_path(v)[0]
 
-                def branch(v):
-                    return self._loading(v)[0]
-            else:
-                lo, hi = max(self._v_high, v_lim), self._v_a
-
-                def branch(v):
-                    return self._shock(self._start, v, self._radius)
-        else:
-            lo, hi = (self._v_low, self._v_max) if plastic else (
-                self._v_a, min(self._v_max, self._v_low))
-            if kind == "shock":
-                def branch(v):
-                    return self._release_shock(v)[0]
-            else:
-                def branch(v):
-                    return self._release_path(v)[0]
+    def _root(self, sigma: float) -> tuple:
+        """``(v, plastic, kind, branch)`` for a target stress outside the "snap" region:
+        the volume behind the wave, found on the branch's table (a fan) or its closed
+        form (a shock), with the closed form of the branch (cached)."""
+        if self._last_root is not None and self._last_root[0] == sigma:
+            return self._last_root[1]
+        a = self.ahead
+        loading = sigma > a.sigma
+        kind = "shock" if loading or self.release == "hugoniot" else "fan"
+        plastic = self._region(sigma) == "plastic"
+        lo, hi, branch = self._branch(loading, plastic, kind)
+        path = self._path_function(branch, kind, plastic)
 
         def residual(v):
-            p = branch(v)
-            return p.sigma - sigma, p.slope
+            stress, slope = path(v)
+            return stress - sigma, slope
 
-        guess = self._v_a - (sigma - a.sigma) / self.impedance**2
+        key = (loading, plastic, kind)
         noise = 16.0 * _EPS * (abs(sigma) + abs(a.sigma))
         try:
-            f_lo, f_hi = residual(lo)[0], residual(hi)[0]
+            ends = self._ends.get(key)
+            if ends is None:
+                ends = self._ends[key] = (path(lo), path(hi)[0])
+            (sigma_lo, slope_lo), sigma_hi = ends
+            f_lo, f_hi = sigma_lo - sigma, sigma_hi - sigma
+            warm = self._warm.get(key)
+            if warm is not None:   # the last solve on this fan branch, one Newton step away
+                guess = warm[1] + (sigma - warm[0]) / warm[2]
+            elif kind == "fan":
+                # the tangent at the fan's start: the path is convex, so this lands
+                # between the start and the root and Newton then converges monotonically
+                guess = lo - f_lo / slope_lo if slope_lo < 0.0 else None
+            else:
+                guess = self._v_a - (sigma - a.sigma) / self.impedance**2
             if abs(f_hi) <= noise or abs(f_lo) <= noise:   # a jump within rounding of an end
                 v = hi if abs(f_hi) <= abs(f_lo) else lo
             else:
@@ -799,6 +845,26 @@ class FinitePlasticWaveCurve(StressRange):
         except (NoSolutionError, StateOutOfRangeError):
             self.check_stress(sigma)
             raise
+        if kind == "fan":
+            slope = path(v)[1]
+            if slope < 0.0:
+                self._warm[key] = (float(sigma), v, slope)
+        result = (v, plastic, kind, branch)
+        self._last_root = (sigma, result)
+        return result
+
+    def _solve(self, sigma: float) -> tuple:
+        """``(behind point, knee point or None, kind)`` for a target stress (cached)."""
+        if self._last is not None and self._last[0] == sigma:
+            return self._last[1]
+        loading = sigma > self.ahead.sigma
+        if self._region(sigma) == "snap":
+            kind = "shock" if loading or self.release == "hugoniot" else "fan"
+            result = (dataclasses.replace(self._knee_up if loading else self._knee_down,
+                                          sigma=float(sigma)), None, kind)
+            self._last = (sigma, result)
+            return result
+        v, plastic, kind, branch = self._root(sigma)
         # the state carries the target stress itself (the branch reproduces it to rounding)
         point = dataclasses.replace(branch(v), sigma=float(sigma))
         knee_point = None
@@ -814,11 +880,16 @@ class FinitePlasticWaveCurve(StressRange):
         """``(g, dg/dsigma)``: the particle-velocity change ``u - u_a = d * g``."""
         if sigma == self.ahead.sigma:
             return 0.0, 1.0 / self.impedance
+        if (sigma < self.ahead.sigma and self.release != "hugoniot"
+                and self._region(sigma) != "snap"):
+            # a fan: its volume, integral and speed from the branch's table alone
+            v, plastic, _, _ = self._root(sigma)
+            table = self._table("plastic-down" if plastic else "elastic", expanding=True)
+            g0 = self._g_low if plastic else 0.0
+            return g0 - table.integral(v), 1.0 / math.sqrt(-table.stress(v)[1])
         point, knee, kind = self._solve(sigma)
-        if kind == "fan":
-            g0 = 0.0 if knee is None else self._g_low
-            branch = "elastic" if knee is None else "plastic-down"
-            return g0 - self._integral(branch, point.v), 1.0 / (self.material.rho0 * point.speed)
+        if kind == "fan":   # a release snapped to the reverse-yield point
+            return self._g_low, 1.0 / (self.material.rho0 * point.speed)
         start = self._start if knee is None else knee
         g0 = 0.0 if knee is None else (self._g_high if sigma > self.ahead.sigma else self._g_low)
         g = self._chord(start, point)
