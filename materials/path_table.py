@@ -51,10 +51,25 @@ _INTEGRATE = _TRANSFORM @ np.polynomial.chebyshev.chebint(
 integral from ``x = -1`` (one more than the interpolant's)."""
 
 
+_CHOP = 4.0 * 2.0**-52
+"""Trailing coefficients below this fraction of a series' largest are dropped: the
+rounding noise of the sampled values alone puts the coefficients of an interpolant that
+has converged at a few ``2^-52`` of the largest, so the tail carries nothing but noise."""
+
+
+_SLIVER = 1e-9
+"""A panel ending within this fraction of its width of the path's end ends there."""
+
+
 def _series(coefficients: np.ndarray) -> tuple[float, tuple[float, ...]]:
-    """``(c_0, (c_n, ..., c_1))``: a series stored in the order Clenshaw uses it."""
+    """``(c_0, (c_m, ..., c_1))``: a series, its negligible tail chopped (``_CHOP``), stored
+    in the order Clenshaw uses it."""
     values = coefficients.tolist()
-    return values[0], tuple(values[:0:-1])
+    floor = _CHOP * max(abs(c) for c in values)
+    count = len(values)
+    while count > 1 and abs(values[count - 1]) <= floor:
+        count -= 1
+    return values[0], tuple(values[count - 1:0:-1])
 
 
 def _clenshaw(series: tuple[float, tuple[float, ...]], x: float) -> float:
@@ -97,7 +112,7 @@ class PathTable:
     def _build_next(self) -> None:
         p0 = self._edges[-1]
         p1 = p0 + self._step
-        if (p1 - self.end) * self._step > 0.0:
+        if (p1 - self.end) * self._step > -_SLIVER * self._step**2:   # no sliver at the end
             p1 = self.end
         half = 0.5 * (p1 - p0)
         sigma, speed = self._sample(p0 + half * (_NODES + 1.0))
