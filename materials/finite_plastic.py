@@ -108,7 +108,7 @@ import numpy as np
 from .base import Material, require_number, require_positive
 from .errors import MaterialError, NoSolutionError, StateOutOfRangeError
 from .mie_gruneisen import MieGruneisen
-from .path_table import PathTable
+from .path_table import PathTable, panel_integral, panel_nodes
 from .roots import EPS as _EPS
 from .roots import bracketed_newton
 from .state import RIGHT, State
@@ -138,32 +138,17 @@ _PHI_SERIES = 0.1
 """Below this |z| the functions ``_phi`` use their Taylor series (16 terms: exact to
 rounding); above it the closed forms lose at most ~1e-15 to cancellation."""
 
-_PHI_TERMS = 16
-_PHI_POWERS = np.arange(_PHI_TERMS)
-_PHI_COEFFICIENTS = np.array([[1.0 / (math.factorial(n) * (n + 1 + order)) for order in (0, 1)]
-                              for n in range(_PHI_TERMS)])
-"""``int_0^1 t^order exp(z t) dt = sum_n z^n / (n! (n + 1 + order))``: the coefficients."""
 
-
-def _phi(z, order: int):
-    """``int_0^1 t^order exp(z t) dt`` for ``order`` 0 or 1 (floats or arrays)."""
-    if isinstance(z, float):
-        if abs(z) <= _PHI_SERIES:
-            total, term = 0.0, 1.0
-            for n in range(_PHI_TERMS):
-                total += term / (n + 1 + order)
-                term *= z / (n + 1)
-            return total
-        em1 = math.expm1(z)
-        return em1 / z if order == 0 else (z * math.exp(z) - em1) / (z * z)
-    z = np.asarray(z, dtype=float)
-    total = np.power.outer(z, _PHI_POWERS) @ _PHI_COEFFICIENTS[:, order]
-    big = np.abs(z) > _PHI_SERIES
-    if np.any(big):
-        zb = z[big]
-        em1 = np.expm1(zb)
-        total[big] = em1 / zb if order == 0 else (zb * np.exp(zb) - em1) / zb**2
-    return total
+def _phi(z: float, order: int) -> float:
+    """``int_0^1 t^order exp(z t) dt`` for ``order`` 0 or 1."""
+    if abs(z) <= _PHI_SERIES:
+        total, term = 0.0, 1.0
+        for n in range(16):
+            total += term / (n + 1 + order)
+            term *= z / (n + 1)
+        return total
+    em1 = math.expm1(z)
+    return em1 / z if order == 0 else (z * math.exp(z) - em1) / (z * z)
 
 
 @dataclasses.dataclass(frozen=True, slots=True)
@@ -485,7 +470,6 @@ class FinitePlasticWaveCurve(StressRange):
         self._last_states: tuple[float, tuple] | None = None
         self._fan_speeds: dict[float, float] = {}
         self._tables: dict[tuple[str, bool], PathTable] = {}
-        self._warm: dict[tuple, tuple[float, float, float]] = {}
         self._ends: dict[tuple, tuple[float, float]] = {}
         g, r = mat.shear_modulus, self._radius
         if math.isfinite(r):
@@ -585,8 +569,8 @@ class FinitePlasticWaveCurve(StressRange):
         return _Point(p + s - self._offset, v, e_h + mat.shear_energy(s), a.plastic_strain,
                       self._acc_a, -c * c / mat.v0**2, c)
 
-    def _plastic_energy(self, knee: _Point, sign: int, v):
-        """``(e_h, S)`` along the plastic path from the yield point ``knee`` (floats or arrays).
+    def _plastic_energy(self, knee: _Point, sign: int, v: float) -> tuple[float, float]:
+        """``(e_h, S)`` along the plastic path from the yield point ``knee``.
 
         ``de_h/dv = -(A + B e_h) - kappa S(v)`` with ``S`` linear in ``v``: closed form
         with the Mie–Grüneisen material function ``F`` and the integrals ``_phi``.
@@ -594,8 +578,7 @@ class FinitePlasticWaveCurve(StressRange):
         mat = self.material
         eos, b, v0 = mat.eos, mat._b, mat.v0
         s_k = sign * self._radius
-        scalar = isinstance(v, float)
-        x = (v if scalar else np.asarray(v, dtype=float)) - knee.v
+        x = v - knee.v
         s = s_k - mat.plastic_modulus * x / v0
         e_h_k = knee.e - mat.shear_energy(s_k)
         a0 = mat.heating_fraction * s_k
@@ -603,8 +586,7 @@ class FinitePlasticWaveCurve(StressRange):
         e_k = float(eos._energy_factor(float(knee.v)))
         f_diff = eos._f(x + knee.v) - eos._f(float(knee.v))
         z = b * x
-        decay = math.exp(-z) if scalar else np.exp(-z)
-        e_h = (e_h_k - f_diff / e_k - a0 * x * _phi(z, 0) - a1 * x * x * _phi(z, 1)) * decay
+        e_h = (e_h_k - f_diff / e_k - a0 * x * _phi(z, 0) - a1 * x * x * _phi(z, 1)) * math.exp(-z)
         return e_h, s
 
     def _plastic_path(self, knee: _Point, sign: int, v: float) -> _Point:
@@ -618,27 +600,45 @@ class FinitePlasticWaveCurve(StressRange):
         return _Point(sigma, v, e_h + mat.shear_energy(s), knee.plastic_strain + dep,
                       knee.accumulated + abs(dep), -c * c / mat.v0**2, c)
 
-    def _path_arrays(self, branch: str, nodes: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """``(sigma, C)`` at volumes ``nodes`` on a continuous branch (the closed forms of
-        ``_elastic_path`` and ``_plastic_path``, vectorised)."""
+    def _path_arrays(self, branch: str, p0: float, p1: float) -> tuple[np.ndarray, np.ndarray]:
+        """``(sigma, C)`` on a continuous branch at the ``panel_nodes`` of ``[p0, p1]``.
+
+        The hydrostatic energy obeys ``de_h/dv = -(A + B e_h) - q(v)`` with the source
+        ``q = kappa S(v)`` on a plastic branch (0 on the elastic one), so with the
+        Mie–Grüneisen factor ``E = exp(B (v - v0))``
+
+            e_h(v) E(v) = e_h(p0) E(p0) - int_{p0}^{v} (A + q) E dw,
+
+        ``e_h(p0)`` from the closed form (``_plastic_energy``, the isentrope) and the
+        integral by spectral integration on the panel (``panel_integral``): the same path
+        to rounding, with a handful of array operations.  Then ``sigma = A + B e_h + S``
+        and ``C^2`` as in ``elastic_speed``/``plastic_speed``.
+        """
         mat = self.material
-        eos = mat.eos
+        eos, b, v0, g = mat.eos, mat._b, mat.v0, mat.shear_modulus
+        nodes = panel_nodes(p0, p1)
+        factor = eos._energy_factor(nodes)
+        a = eos._a(nodes)
         if branch == "elastic":
-            label = eos._isentrope_label(State(0.0, 0.0, self._v_a, self._e_h))
-            e_h = (label - eos._f(nodes)) / eos._energy_factor(nodes)
-            s = self._s_a + 4.0 * mat.shear_modulus * (mat.strain(nodes) - self._eps_a) / 3.0
-            c2 = eos.sound_speed_squared(nodes, e_h) + 4.0 * mat.shear_modulus * mat.v0 / 3.0
+            e_h0 = eos.isentrope(State(0.0, 0.0, self._v_a, self._e_h), p0)[1]
+            s = self._s_a + 4.0 * g * (mat.strain(nodes) - self._eps_a) / 3.0
+            source = a
+            extra = 4.0 * g * v0 / 3.0
         else:
             knee, sign = ((self._knee_down, -1) if branch == "plastic-down"
                           else (self._knee_up, 1))
-            e_h, s = self._plastic_energy(knee, sign, nodes)
-            c2 = (eos.sound_speed_squared(nodes, e_h) + mat.v0 * mat.plastic_modulus
-                  + mat.v0**2 * mat._b * mat.heating_fraction * s)
+            e_h0, s0 = self._plastic_energy(knee, sign, p0)
+            s = s0 - mat.plastic_modulus * (nodes - p0) / v0
+            source = a + mat.heating_fraction * s
+            extra = v0 * mat.plastic_modulus + v0 * v0 * b * mat.heating_fraction * s
+        e_h = (e_h0 * eos._energy_factor(p0) - panel_integral(source * factor, p0, p1)) / factor
+        pressure = a + b * e_h
+        c2 = -v0 * v0 * (eos._a_prime(nodes) - b * pressure) + extra
         if not np.min(c2) > 0.0:
             raise StateOutOfRangeError(f"{mat.name}: the release path leaves the region "
                                        f"of real sound speed near density "
-                                       f"{1.0 / float(np.max(nodes)):.6g}")
-        return eos._a(nodes) + mat._b * e_h + s - self._offset, np.sqrt(c2)
+                                       f"{1.0 / max(p0, p1):.6g}")
+        return pressure + s - self._offset, np.sqrt(c2)
 
     def _table(self, branch: str, expanding: bool) -> PathTable:
         """The Chebyshev table of a continuous branch towards larger volumes
@@ -656,7 +656,7 @@ class FinitePlasticWaveCurve(StressRange):
         table = self._tables.get(key)
         if table is None:
             mat = self.material
-            table = PathTable(lambda nodes: self._path_arrays(branch, nodes), start, end,
+            table = PathTable(lambda p0, p1: self._path_arrays(branch, p0, p1), start, end,
                               _PANEL_FRACTION * mat.v0, mat.rho0)
             self._tables[key] = table
         return table
@@ -825,15 +825,16 @@ class FinitePlasticWaveCurve(StressRange):
         try:
             ends = self._ends.get(key)
             if ends is None:
-                ends = self._ends[key] = (path(lo), path(hi)[0])
+                # the stresses at the ends from the closed form (the ahead state and the
+                # yield point exactly, as ``_region`` compares with), the slope at the
+                # start from the path (a fan's start tangent is the Newton guess)
+                ends = self._ends[key] = ((branch(lo).sigma, path(lo)[1]), branch(hi).sigma)
             (sigma_lo, slope_lo), sigma_hi = ends
             f_lo, f_hi = sigma_lo - sigma, sigma_hi - sigma
-            warm = self._warm.get(key)
-            if warm is not None:   # the last solve on this fan branch, one Newton step away
-                guess = warm[1] + (sigma - warm[0]) / warm[2]
-            elif kind == "fan":
+            if kind == "fan":
                 # the tangent at the fan's start: the path is convex, so this lands
                 # between the start and the root and Newton then converges monotonically
+                # (and the root depends on the target alone, not on earlier solves)
                 guess = lo - f_lo / slope_lo if slope_lo < 0.0 else None
             else:
                 guess = self._v_a - (sigma - a.sigma) / self.impedance**2
@@ -845,10 +846,6 @@ class FinitePlasticWaveCurve(StressRange):
         except (NoSolutionError, StateOutOfRangeError):
             self.check_stress(sigma)
             raise
-        if kind == "fan":
-            slope = path(v)[1]
-            if slope < 0.0:
-                self._warm[key] = (float(sigma), v, slope)
         result = (v, plastic, kind, branch)
         self._last_root = (sigma, result)
         return result

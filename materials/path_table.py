@@ -49,6 +49,25 @@ _INTEGRATE = _TRANSFORM @ np.polynomial.chebyshev.chebint(
     np.eye(CHEBYSHEV_POINTS), lbnd=-1.0, axis=0).T
 """Values at ``_NODES`` times this matrix are the coefficients of the interpolant's
 integral from ``x = -1`` (one more than the interpolant's)."""
+_CUMULATIVE = _INTEGRATE @ np.cos(np.outer(np.arange(CHEBYSHEV_POINTS + 1), _THETA))
+"""Values at ``_NODES`` times this matrix are the interpolant's integrals from ``x = -1``
+to each node (spectral integration)."""
+
+
+def panel_nodes(p0: float, p1: float) -> np.ndarray:
+    """The volumes at which a table samples its panel ``[p0, p1]`` (Chebyshev points)."""
+    half = 0.5 * (p1 - p0)
+    return p0 + half * (_NODES + 1.0)
+
+
+def panel_integral(values: np.ndarray, p0: float, p1: float) -> np.ndarray:
+    """``int_{p0}^{w} f dv`` at the nodes ``w`` of the panel, from ``f`` at those nodes.
+
+    The integral of the Chebyshev interpolant, exact to rounding for an ``f`` analytic
+    well beyond the panel (as the table itself): a path given by an ordinary
+    differential equation with an integrating factor is sampled with it.
+    """
+    return (0.5 * (p1 - p0)) * (values @ _CUMULATIVE)
 
 
 _CHOP = 4.0 * 2.0**-52
@@ -87,9 +106,9 @@ class PathTable:
     Parameters
     ----------
     sample : callable
-        ``sample(volumes) -> (sigma, C)`` at an array of volumes on the path (arrays,
-        Pa and m/s).  It may raise ``StateOutOfRangeError`` (a path leaving its
-        equation of state); a panel that raises is not stored.
+        ``sample(p0, p1) -> (sigma, C)`` on the panel ``[p0, p1]`` at its
+        ``panel_nodes`` (arrays, Pa and m/s).  It may raise ``StateOutOfRangeError`` (a
+        path leaving its equation of state); a panel that raises is not stored.
     start, end : float
         The path's first and last volumes (m^3/kg); ``end`` may lie on either side.
     width : float
@@ -99,7 +118,7 @@ class PathTable:
         Reference density (kg/m^3) in ``J``.
     """
 
-    def __init__(self, sample: Callable[[np.ndarray], tuple[np.ndarray, np.ndarray]],
+    def __init__(self, sample: Callable[[float, float], tuple[np.ndarray, np.ndarray]],
                  start: float, end: float, width: float, rho0: float):
         self._sample = sample
         self.start = float(start)
@@ -115,7 +134,7 @@ class PathTable:
         if (p1 - self.end) * self._step > -_SLIVER * self._step**2:   # no sliver at the end
             p1 = self.end
         half = 0.5 * (p1 - p0)
-        sigma, speed = self._sample(p0 + half * (_NODES + 1.0))
+        sigma, speed = self._sample(p0, p1)
         c_sigma, c_speed = np.stack((sigma, speed)) @ _TRANSFORM
         c_j = (self._rho0 * half) * (speed @ _INTEGRATE)
         j0 = 0.0

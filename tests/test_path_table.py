@@ -18,7 +18,7 @@ import pytest
 from scipy.integrate import quad
 
 from materials import LEFT, RIGHT, FinitePlastic
-from materials.path_table import PathTable
+from materials.path_table import PathTable, panel_integral, panel_nodes
 
 RHO = 2703.0
 V0 = 1.0 / RHO
@@ -27,7 +27,8 @@ V0 = 1.0 / RHO
 def _exponential(k: float, amplitude: float):
     """``sigma = A exp(-k (v - v0))``: ``C = v0 sqrt(A k) exp(-k (v - v0)/2)``, and
     ``J = rho0 int C dv = sqrt(A k) (2/k) (exp(-k (v_s - v0)/2) - exp(-k (v - v0)/2))``."""
-    def sample(v):
+    def sample(p0, p1):
+        v = panel_nodes(p0, p1)
         sigma = amplitude * np.exp(-k * (v - V0))
         return sigma, V0 * np.sqrt(amplitude * k * np.exp(-k * (v - V0)))
 
@@ -58,6 +59,15 @@ def test_table_of_a_closed_form_path_over_several_panels(seed):
         assert table.integral(v) == pytest.approx(j, rel=1e-12, abs=1e-13 * abs(
             exact(start, end)[2]))
     assert len(table._panels) == 6               # 0.3 v0 in panels of 0.05 v0
+
+
+def test_panel_integral_is_spectral_integration():
+    # int_{p0}^{w} cos(k v) dv = (sin(k w) - sin(k p0)) / k on a panel k (p1 - p0) = 1.5
+    p0, p1, k = 0.3, 0.8, 3.0
+    w = panel_nodes(p0, p1)
+    exact = (np.sin(k * w) - math.sin(k * p0)) / k
+    assert panel_integral(np.cos(k * w), p0, p1) == pytest.approx(exact, rel=1e-14, abs=1e-15)
+    assert w.min() > p0 and w.max() < p1
 
 
 def test_within_admits_built_panels_only():
