@@ -95,6 +95,19 @@ States are plain ``State``/``HardenedState`` values.  ``sound_speed(v, e)`` is
 only a state-free estimate (an impedance scale for guesses and tolerances): the
 elastic speed of the virgin material at ``(v, e)`` with its deviator clamped to
 the yield surface.
+
+Tables
+------
+A Riemann solve asks a wave curve for a dozen stresses close together, and the rays
+of a fan for one state each.  A release (fan) branch is therefore sampled once per
+wave curve into a ``materials.path_table.PathTable``: Chebyshev panels (0.05 v0 wide,
+20 points) of the stress and the characteristic speed, sampled by spectral integration
+of ``de_h/dv`` (``_path_arrays``), and the exact integral ``J = int rho0 C dv`` of the
+speed's interpolant.  The volume of a target stress is found by Newton's method on the
+table (from the tangent at the branch's start, so the root depends on the target
+alone); the state behind is then the closed form at that volume.  The tables agree
+with the closed forms and with adaptive quadrature to rounding
+(``tests/test_path_table.py``, 1e-12 over random states).
 """
 
 from __future__ import annotations

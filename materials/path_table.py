@@ -36,6 +36,8 @@ from collections.abc import Callable
 
 import numpy as np
 
+from .base import _clenshaw
+
 CHEBYSHEV_POINTS = 20
 """Chebyshev points (and series length) per panel."""
 
@@ -89,15 +91,6 @@ def _series(coefficients: np.ndarray) -> tuple[float, tuple[float, ...]]:
     while count > 1 and abs(values[count - 1]) <= floor:
         count -= 1
     return values[0], tuple(values[count - 1:0:-1])
-
-
-def _clenshaw(series: tuple[float, tuple[float, ...]], x: float) -> float:
-    """``sum c_k T_k(x)`` at a float ``x`` (Clenshaw recurrence)."""
-    first, tail = series
-    b1 = b2 = 0.0
-    for c in tail:
-        b1, b2 = 2.0 * x * b1 - b2 + c, b1
-    return x * b1 - b2 + first
 
 
 class PathTable:
