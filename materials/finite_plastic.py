@@ -483,7 +483,7 @@ class FinitePlasticWaveCurve(StressRange):
         self._last_states: tuple[float, tuple] | None = None
         self._fan_speeds: dict[float, float] = {}
         self._tables: dict[tuple[str, bool], PathTable] = {}
-        self._ends: dict[tuple, tuple[float, float]] = {}
+        self._ends: dict[tuple, tuple[tuple[float, float], float]] = {}
         g, r = mat.shear_modulus, self._radius
         if math.isfinite(r):
             tol = _SNAP * (r + abs(self._s_a)) + 1e-15 * g
