@@ -95,6 +95,19 @@ States are plain ``State``/``HardenedState`` values.  ``sound_speed(v, e)`` is
 only a state-free estimate (an impedance scale for guesses and tolerances): the
 elastic speed of the virgin material at ``(v, e)`` with its deviator clamped to
 the yield surface.
+
+Tables
+------
+A Riemann solve asks a wave curve for a dozen stresses close together, and the rays
+of a fan for one state each.  A release (fan) branch is therefore sampled once per
+wave curve into a ``materials.path_table.PathTable``: Chebyshev panels (0.05 v0 wide,
+20 points) of the stress and the characteristic speed, sampled by spectral integration
+of ``de_h/dv`` (``_path_arrays``), and the exact integral ``J = int rho0 C dv`` of the
+speed's interpolant.  The volume of a target stress is found by Newton's method on the
+table (from the tangent at the branch's start, so the root depends on the target
+alone); the state behind is then the closed form at that volume.  The tables agree
+with the closed forms and with adaptive quadrature to rounding
+(``tests/test_path_table.py``, 1e-12 over random states).
 """
 
 from __future__ import annotations
@@ -108,7 +121,7 @@ import numpy as np
 from .base import Material, require_number, require_positive
 from .errors import MaterialError, NoSolutionError, StateOutOfRangeError
 from .mie_gruneisen import MieGruneisen
-from .quadrature import panel_edges, points_for, unit_rule
+from .path_table import PathTable, panel_integral, panel_nodes
 from .roots import EPS as _EPS
 from .roots import bracketed_newton
 from .state import RIGHT, State
@@ -125,10 +138,9 @@ _WEAK_JUMP = 1e-5
 Hugoniot at the mid volume instead of the chord of the stored states."""
 
 _PANEL_FRACTION = 0.05
-_SINGULARITY_FRACTION = 0.4
-"""Quadrature panels and analyticity distance, as fractions of v0 (as in ``base``)."""
-
-_MAX_KNOWN_INTEGRALS = 16
+"""Widest panel of a path table, as a fraction of v0 (as in ``base``): the paths are
+analytic at least 0.4 v0 away, so the tables are exact to rounding
+(``materials.path_table``)."""
 
 _MAX_FAN_SPEEDS = 1024
 """Characteristic speeds of fan states a wave curve remembers (``characteristic_speed``
@@ -140,28 +152,16 @@ _PHI_SERIES = 0.1
 rounding); above it the closed forms lose at most ~1e-15 to cancellation."""
 
 
-def _phi(z, order: int):
-    """``int_0^1 t^order exp(z t) dt`` for ``order`` 0 or 1 (floats or arrays)."""
-    if isinstance(z, float):
-        if abs(z) <= _PHI_SERIES:
-            total, term = 0.0, 1.0
-            for n in range(16):
-                total += term / (n + 1 + order)
-                term *= z / (n + 1)
-            return total
-        em1 = math.expm1(z)
-        return em1 / z if order == 0 else (z * math.exp(z) - em1) / (z * z)
-    z = np.asarray(z, dtype=float)
-    total, term = np.zeros_like(z), np.ones_like(z)
-    for n in range(16):
-        total += term / (n + 1 + order)
-        term = term * z / (n + 1)
-    big = np.abs(z) > _PHI_SERIES
-    if np.any(big):
-        zb = z[big]
-        em1 = np.expm1(zb)
-        total[big] = em1 / zb if order == 0 else (zb * np.exp(zb) - em1) / zb**2
-    return total
+def _phi(z: float, order: int) -> float:
+    """``int_0^1 t^order exp(z t) dt`` for ``order`` 0 or 1."""
+    if abs(z) <= _PHI_SERIES:
+        total, term = 0.0, 1.0
+        for n in range(16):
+            total += term / (n + 1 + order)
+            term *= z / (n + 1)
+        return total
+    em1 = math.expm1(z)
+    return em1 / z if order == 0 else (z * math.exp(z) - em1) / (z * z)
 
 
 @dataclasses.dataclass(frozen=True, slots=True)
@@ -479,9 +479,11 @@ class FinitePlasticWaveCurve(StressRange):
         self._v_max *= 1.0 - 1e-12
         self._limits: tuple[float, float] | None = None
         self._last: tuple[float, tuple] | None = None
+        self._last_root: tuple[float, tuple] | None = None
         self._last_states: tuple[float, tuple] | None = None
         self._fan_speeds: dict[float, float] = {}
-        self._integrals: dict[str, list] = {}
+        self._tables: dict[tuple[str, bool], PathTable] = {}
+        self._ends: dict[tuple, tuple[tuple[float, float], float]] = {}
         g, r = mat.shear_modulus, self._radius
         if math.isfinite(r):
             tol = _SNAP * (r + abs(self._s_a)) + 1e-15 * g
@@ -497,7 +499,8 @@ class FinitePlasticWaveCurve(StressRange):
         # the two knees: the yield points reached by the elastic waves
         self._knee_up = self._knee_down = None
         self.yield_high, self.yield_low = math.inf, -math.inf
-        self._g_high = self._g_low = math.nan
+        self._g_high = math.nan
+        self._g_low_value: float | None = math.nan
         if self._v_high > self._v_min:
             self._knee_up = (self._start if self._v_high == v_a else
                              self._shock(self._start, self._v_high, radius=r, on_yield=+1))
@@ -506,14 +509,23 @@ class FinitePlasticWaveCurve(StressRange):
         if self._v_low < self._v_max:
             if self._v_low == v_a:
                 self._knee_down = self._start
-                self._g_low = 0.0
+                self._g_low_value = 0.0
             elif release == "hugoniot":
                 self._knee_down = self._shock(self._start, self._v_low, radius=r, on_yield=-1)
-                self._g_low = self._chord(self._start, self._knee_down)
+                self._g_low_value = self._chord(self._start, self._knee_down)
             else:
                 self._knee_down = self._elastic_path(self._v_low, on_yield=True)
-                self._g_low = -self._integral("elastic", self._v_low)
+                self._g_low_value = None   # the elastic fan's integral, when first asked
             self.yield_low = self._knee_down.sigma
+
+    @property
+    def _g_low(self) -> float:
+        """Velocity change (signed like the stress jump) across the elastic release to
+        the reverse-yield point (m/s), integrated on first use: a loading curve never
+        needs it."""
+        if self._g_low_value is None:
+            self._g_low_value = -self._integral("elastic", self._v_low)
+        return self._g_low_value
 
     # --- elementary branches ------------------------------------------------------------
     def _shock(self, start: _Point, v: float, radius: float, on_yield: int = 0) -> _Point:
@@ -570,8 +582,8 @@ class FinitePlasticWaveCurve(StressRange):
         return _Point(p + s - self._offset, v, e_h + mat.shear_energy(s), a.plastic_strain,
                       self._acc_a, -c * c / mat.v0**2, c)
 
-    def _plastic_energy(self, knee: _Point, sign: int, v):
-        """``(e_h, S)`` along the plastic path from the yield point ``knee`` (floats or arrays).
+    def _plastic_energy(self, knee: _Point, sign: int, v: float) -> tuple[float, float]:
+        """``(e_h, S)`` along the plastic path from the yield point ``knee``.
 
         ``de_h/dv = -(A + B e_h) - kappa S(v)`` with ``S`` linear in ``v``: closed form
         with the Mie–Grüneisen material function ``F`` and the integrals ``_phi``.
@@ -579,8 +591,7 @@ class FinitePlasticWaveCurve(StressRange):
         mat = self.material
         eos, b, v0 = mat.eos, mat._b, mat.v0
         s_k = sign * self._radius
-        scalar = isinstance(v, float)
-        x = (v if scalar else np.asarray(v, dtype=float)) - knee.v
+        x = v - knee.v
         s = s_k - mat.plastic_modulus * x / v0
         e_h_k = knee.e - mat.shear_energy(s_k)
         a0 = mat.heating_fraction * s_k
@@ -588,8 +599,7 @@ class FinitePlasticWaveCurve(StressRange):
         e_k = float(eos._energy_factor(float(knee.v)))
         f_diff = eos._f(x + knee.v) - eos._f(float(knee.v))
         z = b * x
-        decay = math.exp(-z) if scalar else np.exp(-z)
-        e_h = (e_h_k - f_diff / e_k - a0 * x * _phi(z, 0) - a1 * x * x * _phi(z, 1)) * decay
+        e_h = (e_h_k - f_diff / e_k - a0 * x * _phi(z, 0) - a1 * x * x * _phi(z, 1)) * math.exp(-z)
         return e_h, s
 
     def _plastic_path(self, knee: _Point, sign: int, v: float) -> _Point:
@@ -603,46 +613,71 @@ class FinitePlasticWaveCurve(StressRange):
         return _Point(sigma, v, e_h + mat.shear_energy(s), knee.plastic_strain + dep,
                       knee.accumulated + abs(dep), -c * c / mat.v0**2, c)
 
-    def _path_c2(self, branch: str, nodes: np.ndarray) -> np.ndarray:
-        """Squared characteristic speeds at volumes ``nodes`` on a continuous branch."""
+    def _path_arrays(self, branch: str, p0: float, p1: float) -> tuple[np.ndarray, np.ndarray]:
+        """``(sigma, C)`` on a continuous branch at the ``panel_nodes`` of ``[p0, p1]``.
+
+        The hydrostatic energy obeys ``de_h/dv = -(A + B e_h) - q(v)`` with the source
+        ``q = kappa S(v)`` on a plastic branch (0 on the elastic one), so with the
+        Mie–Grüneisen factor ``E = exp(B (v - v0))``
+
+            e_h(v) E(v) = e_h(p0) E(p0) - int_{p0}^{v} (A + q) E dw,
+
+        ``e_h(p0)`` from the closed form (``_plastic_energy``, the isentrope) and the
+        integral by spectral integration on the panel (``panel_integral``): the same path
+        to rounding, with a handful of array operations.  Then ``sigma = A + B e_h + S``
+        and ``C^2`` as in ``elastic_speed``/``plastic_speed``.
+        """
         mat = self.material
-        eos = mat.eos
+        eos, b, v0, g = mat.eos, mat._b, mat.v0, mat.shear_modulus
+        nodes = panel_nodes(p0, p1)
+        factor = eos._energy_factor(nodes)
+        a = eos._a(nodes)
         if branch == "elastic":
-            label = eos._isentrope_label(State(0.0, 0.0, self._v_a, self._e_h))
-            e_h = (label - eos._f(nodes)) / eos._energy_factor(nodes)
-            return eos.sound_speed_squared(nodes, e_h) + 4.0 * mat.shear_modulus * mat.v0 / 3.0
-        knee, sign = (self._knee_down, -1) if branch == "plastic-down" else (self._knee_up, 1)
-        e_h, s = self._plastic_energy(knee, sign, nodes)
-        return (eos.sound_speed_squared(nodes, e_h) + mat.v0 * mat.plastic_modulus
-                + mat.v0**2 * mat._b * mat.heating_fraction * s)
+            e_h0 = eos.isentrope(State(0.0, 0.0, self._v_a, self._e_h), p0)[1]
+            s = self._s_a + 4.0 * g * (mat.strain(nodes) - self._eps_a) / 3.0
+            source = a
+            extra = 4.0 * g * v0 / 3.0
+        else:
+            knee, sign = ((self._knee_down, -1) if branch == "plastic-down"
+                          else (self._knee_up, 1))
+            e_h0, s0 = self._plastic_energy(knee, sign, p0)
+            s = s0 - mat.plastic_modulus * (nodes - p0) / v0
+            source = a + mat.heating_fraction * s
+            extra = v0 * mat.plastic_modulus + v0 * v0 * b * mat.heating_fraction * s
+        e_h = (e_h0 * eos._energy_factor(p0) - panel_integral(source * factor, p0, p1)) / factor
+        pressure = a + b * e_h
+        c2 = -v0 * v0 * (eos._a_prime(nodes) - b * pressure) + extra
+        if not np.min(c2) > 0.0:
+            raise StateOutOfRangeError(f"{mat.name}: the release path leaves the region "
+                                       f"of real sound speed near density "
+                                       f"{1.0 / max(p0, p1):.6g}")
+        return pressure + s - self._offset, np.sqrt(c2)
+
+    def _table(self, branch: str, expanding: bool) -> PathTable:
+        """The Chebyshev table of a continuous branch towards larger volumes
+        (``expanding``) or smaller ones from its start (the elastic branch runs both
+        ways from the ahead state, a plastic one only away from its yield point)."""
+        if branch == "elastic":
+            start = self._v_a
+            end = (min(self._v_low, self._v_max) if expanding
+                   else max(self._v_high, self._v_min))
+        elif branch == "plastic-down":
+            start, end = self._knee_down.v, self._v_max
+        else:
+            start, end = self._knee_up.v, self._v_min
+        key = (branch, expanding)
+        table = self._tables.get(key)
+        if table is None:
+            mat = self.material
+            table = PathTable(lambda p0, p1: self._path_arrays(branch, p0, p1), start, end,
+                              _PANEL_FRACTION * mat.v0, mat.rho0)
+            self._tables[key] = table
+        return table
 
     def _integral(self, branch: str, v: float) -> float:
-        """``int rho0 C dv`` from the branch's start to ``v`` (Gauss–Legendre on panels),
-        continued from the nearest volume already integrated on this curve."""
-        mat = self.material
-        starts = {"elastic": self._v_a,
-                  "plastic-down": self._knee_down.v if self._knee_down else math.nan,
-                  "plastic-up": self._knee_up.v if self._knee_up else math.nan}
-        known = self._integrals.setdefault(branch, [(starts[branch], 0.0)])
-        v_near, j_near = min(known, key=lambda k: abs(k[0] - v))
-        if v == v_near:
-            return j_near
-        panel = _PANEL_FRACTION * mat.v0
-        edges = ((v_near, v) if abs(v - v_near) <= panel
-                 else panel_edges(v_near, v, panel).tolist())
-        points = points_for(edges[1] - edges[0], _SINGULARITY_FRACTION * mat.v0)
-        nodes01, weights = unit_rule(points)
-        total = 0.0
-        for lo, hi in zip(edges[:-1], edges[1:], strict=True):
-            c2 = self._path_c2(branch, lo + (hi - lo) * nodes01)
-            if not np.min(c2) > 0.0:
-                raise StateOutOfRangeError(f"{mat.name}: the release path leaves the region "
-                                           f"of real sound speed near density {1.0 / hi:.6g}")
-            total += (hi - lo) * float(np.sqrt(c2) @ weights)
-        j = j_near + mat.rho0 * total
-        if len(known) < _MAX_KNOWN_INTEGRALS:
-            known.append((v, j))
-        return j
+        """``int rho0 C dv`` from the branch's start to ``v`` (m/s), from its table."""
+        expanding = branch == "plastic-down" or (branch == "elastic" and v > self._v_a)
+        return self._table(branch, expanding).integral(v)
 
     @staticmethod
     def _chord(a: _Point, b: _Point) -> float:
@@ -747,50 +782,75 @@ class FinitePlasticWaveCurve(StressRange):
             return "snap"
         return "plastic"
 
-    def _solve(self, sigma: float) -> tuple:
-        """``(behind point, knee point or None, kind)`` for a target stress (cached)."""
-        if self._last is not None and self._last[0] == sigma:
-            return self._last[1]
-        a, mat = self.ahead, self.material
-        region = self._region(sigma)
-        loading = sigma > a.sigma
-        kind = "shock" if loading or self.release == "hugoniot" else "fan"
-        if region == "snap":
-            result = (dataclasses.replace(self._knee_up if loading else self._knee_down,
-                                          sigma=float(sigma)), None, kind)
-            self._last = (sigma, result)
-            return result
-        plastic = region == "plastic"
+    def _path_function(self, branch: Callable[[float], _Point], kind: str,
+                       plastic: bool) -> Callable[[float], tuple[float, float]]:
+        """``v -> (sigma, dsigma/dv)`` on one branch: from the branch's table for a fan
+        where the table reaches (rounding-exact and far cheaper), else the closed form."""
+        if kind != "fan":
+            def closed(v):
+                p = branch(v)
+                return p.sigma, p.slope
+            return closed
+        table = self._table("plastic-down" if plastic else "elastic", expanding=True)
+
+        def tabulated(v):
+            if table.within(v):
+                return table.stress(v)
+            p = branch(v)
+            return p.sigma, p.slope
+        return tabulated
+
+    def _branch(self, loading: bool, plastic: bool, kind: str):
+        """``(lo, hi, branch)``: the volumes bracketing one branch and its closed form
+        ``v -> _Point``."""
+        mat, a = self.material, self.ahead
         if loading:
             v_lim = mat.hugoniot_volume_limit(a)
             if plastic:
-                lo, hi = v_lim, self._v_high
+                return v_lim, self._v_high, lambda v: self._loading(v)[0]
+            return (max(self._v_high, v_lim), self._v_a,
+                    lambda v: self._shock(self._start, v, self._radius))
+        lo, hi = (self._v_low, self._v_max) if plastic else (
+            self._v_a, min(self._v_max, self._v_low))
+        if kind == "shock":
+            return lo, hi, lambda v: self._release_shock(v)[0]
+        return lo, hi, lambda v: self._release_path(v)[0]
 
-                def branch(v):
-                    return self._loading(v)[0]
-            else:
-                lo, hi = max(self._v_high, v_lim), self._v_a
-
-                def branch(v):
-                    return self._shock(self._start, v, self._radius)
-        else:
-            lo, hi = (self._v_low, self._v_max) if plastic else (
-                self._v_a, min(self._v_max, self._v_low))
-            if kind == "shock":
-                def branch(v):
-                    return self._release_shock(v)[0]
-            else:
-                def branch(v):
-                    return self._release_path(v)[0]
+    def _root(self, sigma: float) -> tuple:
+        """``(v, plastic, kind, branch)`` for a target stress outside the "snap" region:
+        the volume behind the wave, found on the branch's table (a fan) or its closed
+        form (a shock), with the closed form of the branch (cached)."""
+        if self._last_root is not None and self._last_root[0] == sigma:
+            return self._last_root[1]
+        a = self.ahead
+        loading = sigma > a.sigma
+        kind = "shock" if loading or self.release == "hugoniot" else "fan"
+        plastic = self._region(sigma) == "plastic"
+        lo, hi, branch = self._branch(loading, plastic, kind)
+        path = self._path_function(branch, kind, plastic)
 
         def residual(v):
-            p = branch(v)
-            return p.sigma - sigma, p.slope
+            stress, slope = path(v)
+            return stress - sigma, slope
 
-        guess = self._v_a - (sigma - a.sigma) / self.impedance**2
+        key = (loading, plastic, kind)
         noise = 16.0 * _EPS * (abs(sigma) + abs(a.sigma))
         try:
-            f_lo, f_hi = residual(lo)[0], residual(hi)[0]
+            ends = self._ends.get(key)
+            if ends is None:
+                # the stresses at the ends from the closed form (the ahead state and the
+                # yield point exactly, as ``_region`` compares with), the slope at the
+                # start from the path (a fan's start tangent is the Newton guess)
+                ends = self._ends[key] = ((branch(lo).sigma, path(lo)[1]), branch(hi).sigma)
+            (sigma_lo, slope_lo), sigma_hi = ends
+            f_lo, f_hi = sigma_lo - sigma, sigma_hi - sigma
+            if kind == "fan":
+                # the tangent at the fan's start: the path is convex, so this lands
+                # between the start and the root and Newton then converges monotonically
+                # (and the root depends on the target alone, not on earlier solves)
+                guess = lo - f_lo / slope_lo if slope_lo < 0.0 else None
+            else:
+                guess = self._v_a - (sigma - a.sigma) / self.impedance**2
             if abs(f_hi) <= noise or abs(f_lo) <= noise:   # a jump within rounding of an end
                 v = hi if abs(f_hi) <= abs(f_lo) else lo
             else:
@@ -799,6 +859,22 @@ class FinitePlasticWaveCurve(StressRange):
         except (NoSolutionError, StateOutOfRangeError):
             self.check_stress(sigma)
             raise
+        result = (v, plastic, kind, branch)
+        self._last_root = (sigma, result)
+        return result
+
+    def _solve(self, sigma: float) -> tuple:
+        """``(behind point, knee point or None, kind)`` for a target stress (cached)."""
+        if self._last is not None and self._last[0] == sigma:
+            return self._last[1]
+        loading = sigma > self.ahead.sigma
+        if self._region(sigma) == "snap":
+            kind = "shock" if loading or self.release == "hugoniot" else "fan"
+            result = (dataclasses.replace(self._knee_up if loading else self._knee_down,
+                                          sigma=float(sigma)), None, kind)
+            self._last = (sigma, result)
+            return result
+        v, plastic, kind, branch = self._root(sigma)
         # the state carries the target stress itself (the branch reproduces it to rounding)
         point = dataclasses.replace(branch(v), sigma=float(sigma))
         knee_point = None
@@ -814,11 +890,16 @@ class FinitePlasticWaveCurve(StressRange):
         """``(g, dg/dsigma)``: the particle-velocity change ``u - u_a = d * g``."""
         if sigma == self.ahead.sigma:
             return 0.0, 1.0 / self.impedance
+        if (sigma < self.ahead.sigma and self.release != "hugoniot"
+                and self._region(sigma) != "snap"):
+            # a fan: its volume, integral and speed from the branch's table alone
+            v, plastic, _, _ = self._root(sigma)
+            table = self._table("plastic-down" if plastic else "elastic", expanding=True)
+            g0 = self._g_low if plastic else 0.0
+            return g0 - table.integral(v), 1.0 / math.sqrt(-table.stress(v)[1])
         point, knee, kind = self._solve(sigma)
-        if kind == "fan":
-            g0 = 0.0 if knee is None else self._g_low
-            branch = "elastic" if knee is None else "plastic-down"
-            return g0 - self._integral(branch, point.v), 1.0 / (self.material.rho0 * point.speed)
+        if kind == "fan":   # a release snapped to the reverse-yield point
+            return self._g_low, 1.0 / (self.material.rho0 * point.speed)
         start = self._start if knee is None else knee
         g0 = 0.0 if knee is None else (self._g_high if sigma > self.ahead.sigma else self._g_low)
         g = self._chord(start, point)
