@@ -115,8 +115,6 @@ class _Grid:
         self.dt = self.dx / mat.C0
         self.thickness = thickness
         self.z = mat.impedance
-        self.c = 4.0 * mat.mu / (3.0 * mat.modulus)
-        self.c2 = 2.0 * mat.mu * (self.c - 1.0)
         self.mu_dt = mat.mu * self.dt
 
     def _rate(self, sigma, ep):
@@ -133,8 +131,7 @@ class _Grid:
         ap = sl + z * ul - mdt * pl
         am = sr - z * ur - mdt * pr
         base = eb + dt * pb
-        phi = self.mat.implicit_rate(self.c * 0.5 * (ap + am) + self.c2 * base,
-                                     self.c * mdt - self.c2 * dt)
+        phi = self.mat.implicit_rate(0.5 * (ap + am), mdt, base, dt)
         return (0.5 * (ap + am) - mdt * phi, (ap - am) / (2.0 * z), base + dt * phi,
                 self._kept(phi))
 
@@ -143,8 +140,7 @@ class _Grid:
         z, dt, mdt = self.z, self.dt, self.mu_dt
         am = sr - z * ur - mdt * pr
         base = eb + dt * pb
-        phi = self.mat.implicit_rate(self.c * (am + z * self.u0) + self.c2 * base,
-                                     self.c * mdt - self.c2 * dt)
+        phi = self.mat.implicit_rate(am + z * self.u0, mdt, base, dt)
         return am + z * self.u0 - mdt * phi, self.u0, base + dt * phi, self._kept(phi)
 
     def free(self, left, below):
@@ -152,7 +148,7 @@ class _Grid:
         z, dt, mdt = self.z, self.dt, self.mu_dt
         ap = sl + z * ul - mdt * pl
         base = eb + dt * pb
-        phi = self.mat.implicit_rate(self.c2 * base, -self.c2 * dt)
+        phi = self.mat.implicit_rate(0.0, 0.0, base, dt)
         return 0.0, (ap - mdt * phi) / z, base + dt * phi, self._kept(phi)
 
     def behind_front(self, direction: int, along, ahead):
@@ -165,8 +161,7 @@ class _Grid:
             carried, jumped = s + z * u - mdt * p, sa - z * ua      # C+ and sigma - Z u
         else:
             carried, jumped = s - z * u - mdt * p, sa + z * ua      # C- and sigma + Z u
-        phi = float(self.mat.implicit_rate(self.c * 0.5 * (carried + jumped) + self.c2 * ea,
-                                           0.5 * self.c * mdt))
+        phi = float(self.mat.implicit_rate(0.5 * (carried + jumped), 0.5 * mdt, ea, 0.0))
         sigma = 0.5 * (carried + jumped) - 0.5 * mdt * phi
         u = direction * (carried - mdt * phi - jumped) / (2.0 * z)
         return sigma, u, ea, self._kept(phi)
@@ -246,9 +241,22 @@ class _Grid:
             fronts[n] = _Front(index, direction, ahead, behind)
             for f, v in zip(fields, behind, strict=True):
                 f[n, index] = v
+        self._check_range(sig, eps_p)
         return ViscoplasticRun(self.mat, self.thickness, self.dt, self.dx, sig, vel, eps_p,
                                np.array([p[0] for p in precursor]),
                                np.array([p[1] for p in precursor]))
+
+    def _check_range(self, sigma, plastic_strain) -> None:
+        """The model needs the relaxed modulus ``p'(eps)`` below the elastic one ``M``
+        (``materials.viscoplastic``); a convex equilibrium pressure leaves that range at
+        large compression."""
+        mat = self.mat
+        eps = np.nanmax(mat.strain(sigma, plastic_strain))
+        if not mat.pressure_slope(eps) < mat.modulus:
+            raise MaterialError(f"piston velocity {self.u0!r} m/s compresses {mat.name} to "
+                                f"eps = {eps:.4g}, where the slope of the equilibrium "
+                                f"pressure reaches the elastic modulus M: beyond the range "
+                                f"of hugoniot_slope {mat.hugoniot_slope!r}")
 
     def _node(self, i: int, n: int, value):
         """One node by its rule, its inputs read from the side of the fronts it lies on."""
