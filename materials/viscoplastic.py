@@ -131,6 +131,16 @@ class Viscoplastic:
                                 f"got {self.hugoniot_slope!r}")
 
     @property
+    def v0(self) -> float:
+        """Reference specific volume (m^3/kg)."""
+        return 1.0 / self.rho0
+
+    def sound_speed(self, v: float, e: float) -> float:
+        """Lagrangian speed of every wave (m/s): the elastic ``C0`` (the plastic strain
+        cannot jump); ``v`` and ``e`` are not used."""
+        return self.C0
+
+    @property
     def modulus(self) -> float:
         """Longitudinal modulus ``M = lambda + 2 mu`` (Pa)."""
         return self.lam + 2.0 * self.mu
