@@ -1,6 +1,6 @@
-"""Viscoplastic scenes through ``ft.run`` and ``wavediagram run``.
+"""Viscoplastic scenes through ``ft.run`` and ``wavediagram run``
+(``fronttrack.viscoplastic_scene``).
 
-(``fronttrack.viscoplastic_scene``.)
 References: the elastic (tau = inf) impact in closed form (acoustic impedance match,
 a free-surface velocity twice the particle velocity, an unbonded contact opening when
 the flyer's release would pull it); the decayed precursor from the book's decay law
