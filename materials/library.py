@@ -293,6 +293,8 @@ def listing() -> str:
             lines.append(f"{name:<12} {e['solid_rho0'] / e['alpha0']:>10.0f} "
                          f"{e['alpha0']:>8.3f} {e.get('crush_stress', 0.0) / 1e9:>9.3f}  "
                          f"{e.get('source', '')}")
+            if "caution" in e:
+                lines.append(f"{'':<12} ! {e['caution']}")
     for name in available("phase-change"):
         e = _library()[name]
         lines.append(f"{name:<12} {e['rho0']:>10.0f}  phase change at "
