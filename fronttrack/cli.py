@@ -159,6 +159,7 @@ def _run(args) -> int:
     if args.json is not None:
         check_output_file(args.json, "--json", inputs=(args.scene,))
     if viscoplastic_scene.applies(scene):    # solved on its characteristic grid
+        viscoplastic_scene.check_cli_options(args)
         written = viscoplastic_scene.write_outputs(viscoplastic_scene.run(scene), args.output,
                                                    args.json, figures=not args.no_figures)
         for path in [] if args.quiet else written:

@@ -61,12 +61,22 @@ def applies(scene: Scene) -> bool:
 
 @dataclass(frozen=True)
 class GridRecord:
-    """A probe's record: ``t`` (s) and ``sigma`` (Pa), ``u`` (m/s), ``rho`` (kg/m^3)."""
+    """A probe's record: ``t`` (s) and ``sigma`` (Pa), ``u`` (m/s), ``rho`` (kg/m^3) at
+    each sample, linear in between (as a ``History``: ``sigma_end``, ``u_end`` are the
+    values each piece ends at, the next sample's)."""
 
     t: np.ndarray
     sigma: np.ndarray
     u: np.ndarray
     rho: np.ndarray
+
+    @property
+    def sigma_end(self) -> np.ndarray:
+        return np.append(self.sigma[1:], self.sigma[-1:])
+
+    @property
+    def u_end(self) -> np.ndarray:
+        return np.append(self.u[1:], self.u[-1:])
 
 
 @dataclass
@@ -258,6 +268,21 @@ def _report(result: ViscoplasticRun, trip: float | None) -> dict:
     if trip is not None:
         report["flyer_round_trip"] = {"flyer": trip, "grid": result.round_trip}
     return report
+
+
+CLI_OPTIONS = {"--dt": lambda a: a.dt is not None, "--peaks": lambda a: a.peaks,
+               "--estimate-error": lambda a: a.estimate_error,
+               "--time-limit": lambda a: a.time_limit is not None,
+               "--format": lambda a: a.image_format != "png"}
+"""Options of ``wavediagram run`` that the grid's outputs do not serve."""
+
+
+def check_cli_options(args) -> None:
+    """Refuse, naming it, an option of ``wavediagram run`` a grid solution cannot serve."""
+    for option, given in CLI_OPTIONS.items():
+        if given(args):
+            raise SceneError(f"{option}: not available for a scene with a viscoplastic "
+                             f"layer (solved on the characteristic grid)")
 
 
 def write_outputs(solution: GridSolution, outdir: Path | None, json_path: Path | None,

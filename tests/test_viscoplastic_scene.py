@@ -166,6 +166,14 @@ def test_command_line_writes_records_json_and_figures(tmp_path):
     assert window_u == pytest.approx(rear_u, rel=1e-15)
 
 
+def test_command_line_refuses_options_the_grid_does_not_serve(tmp_path, capsys):
+    path = tmp_path / "vp.toml"
+    path.write_text(SCENE.format(window="", rear="right"))
+    assert main(["run", str(path), "-o", str(tmp_path / "out"), "--peaks"]) == 2
+    error = capsys.readouterr().err
+    assert "--peaks" in error and error.count("\n") == 1
+
+
 def test_piston_scene_is_the_grid_run():
     mat = Viscoplastic("steel", RHO, LAM, MU, Y, 50e-9)
     scene = ft.Scene([ft.Layer(mat, "4 mm")], t_end="0.6 us",
@@ -176,6 +184,7 @@ def test_piston_scene_is_the_grid_run():
     t, u = direct.history(2e-3, "u")
     record = solution.history("mid")
     assert np.array_equal(record.t, t) and np.array_equal(record.u, u)
+    assert record.u_end[-1] == record.u[-1] and np.array_equal(record.u_end[:-1], u[1:])
 
 
 @pytest.mark.parametrize("change, field", [
