@@ -80,16 +80,15 @@ class SteadyWave:
 
         eps = eps_a + fractions * (eps_b - eps_a)
         mid = 0.5 * (eps_a + eps_b)
-        out = np.empty_like(eps)
-        for part in (eps >= mid, eps < mid):
+        out = np.zeros_like(eps)            # zero at the midpoint itself
+        for part, sign in ((eps > mid, 1.0), (eps < mid, -1.0)):
             if not np.any(part):
                 continue
-            targets = eps[part]
-            ends = targets.max() if targets[0] >= mid else targets.min()
-            order = np.argsort(targets) if ends > mid else np.argsort(-targets)
-            solved = solve_ivp(slope, (mid, ends), [0.0],
-                               method="DOP853", t_eval=targets[order], rtol=1e-10,
-                               atol=1e-15)
+            targets = eps[part]                 # increasing: integrate up from the midpoint
+            order = np.argsort(sign * targets)  # decreasing: down from it
+            end = targets[order][-1]
+            solved = solve_ivp(slope, (mid, end), [0.0], method="DOP853",
+                               t_eval=targets[order], rtol=1e-10, atol=1e-15)
             values = np.empty(targets.size)
             values[order] = solved.y[0]
             out[part] = values

@@ -93,6 +93,9 @@ def test_end_states_and_speed_satisfy_the_jump_conditions():
 def test_library_profile_matches_the_quadrature():
     wave = steady_wave(steel(), U0)
     assert wave.position(FRACTIONS) == pytest.approx(ode_positions(FRACTIONS), rel=1e-7)
+    assert wave.position([0.5])[0] == 0.0                  # the origin: the midpoint
+    assert wave.width() == pytest.approx(ode_positions([0.1])[0] - ode_positions([0.9])[0],
+                                         rel=1e-7)
 
 
 def test_grid_wave_becomes_the_steady_wave():
