@@ -28,6 +28,7 @@ from pathlib import Path
 
 from materials import WavediagramError, library
 
+from . import viscoplastic_scene
 from .cli_exports import (
     add_export_flags,
     check_export_flags,
@@ -157,6 +158,13 @@ def _run(args) -> int:
             check_output_file(args.output / name, "-o", inputs=(args.scene,))
     if args.json is not None:
         check_output_file(args.json, "--json", inputs=(args.scene,))
+    if viscoplastic_scene.applies(scene):    # solved on its characteristic grid
+        viscoplastic_scene.check_cli_options(args)
+        written = viscoplastic_scene.write_outputs(viscoplastic_scene.run(scene), args.output,
+                                                   args.json, figures=not args.no_figures)
+        for path in [] if args.quiet else written:
+            print(f"wrote {path}")
+        return 0
     solution = _solve(scene, quiet=args.quiet)
     written = _write_outputs(solution, args.output, json_path=args.json,
                              figures=not args.no_figures, compact=args.json_compact,

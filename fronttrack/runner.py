@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import time
 
-from . import balance, fits
+from . import balance, fits, viscoplastic_scene
 from .damage import run_with_damage
 from .engine import Engine
 from .error_estimate import estimate_error
@@ -30,11 +30,15 @@ def run(scene: Scene, progress=None) -> Solution:
     accuracy settings promise, and for each material compressed beyond its fitted data
     (``fronttrack.fits``).
     With ``accuracy.max_seconds`` the solution may end before ``t_end``; its
-    ``stats["stopped"]`` then says when and why.
+    ``stats["stopped"]`` then says when and why.  A scene with a viscoplastic layer is
+    solved on its characteristic grid instead (``fronttrack.viscoplastic_scene``): a
+    ``GridSolution`` with the same probe records.
     """
     if not isinstance(scene, Scene):
         raise SceneError(f"scene: expected a Scene (ft.load_scene reads a scene file), "
                          f"got {scene!r:.60}")
+    if viscoplastic_scene.applies(scene):     # relaxation between fronts: the grid
+        return viscoplastic_scene.run(scene)
     limit = scene.accuracy.max_seconds
     deadline = None if limit is None else time.perf_counter() + limit
     if scene.spall_criterion is not None:

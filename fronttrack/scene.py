@@ -20,6 +20,7 @@ from dataclasses import dataclass, field
 
 from materials import Material, MaterialError, State, StateOutOfRangeError
 from materials.library import get as library_material
+from materials.viscoplastic import Viscoplastic
 
 from . import initiation
 from .errors import SceneError, located
@@ -42,9 +43,10 @@ def _set(obj, name: str, value) -> None:
     object.__setattr__(obj, name, value)
 
 
-def _material(where: str, value) -> Material:
-    """A material given as an object or by library name."""
-    if isinstance(value, Material):
+def _material(where: str, value) -> Material | Viscoplastic:
+    """A material given as an object or by library name (a viscoplastic solid is run on
+    its characteristic grid, ``fronttrack.viscoplastic_scene``)."""
+    if isinstance(value, Material | Viscoplastic):
         return value
     if isinstance(value, str):
         try:

@@ -49,13 +49,15 @@ def main() -> None:
                fan.behind.sigma * GPA], "s", color="black", ms=4,
                label="HEL and the fan's tail")
     ax_su.legend(fontsize=8, loc="upper left")
-    common.note(ax_su, f"precursor: {precursor.behind.sigma * GPA:.3f} GPa at "
-                f"{precursor.speed:.0f} m/s\nplastic fan: {fan.head_speed:.0f} → "
-                f"{fan.tail_speed:.0f} m/s to {fan.behind.sigma * GPA:.2f} GPa\n"
-                f"plastic shock: {shock.speed:.0f} m/s to {shock.behind.sigma * GPA:.2f} GPa",
-                xy=(0.98, 0.03), ha="right", va="bottom")
     edges, values = common.surface_velocity(solution, "right")
     common.plot_record(ax_record, edges, values, label="target free surface")
+    # the note goes on the record's empty upper left: on the σ–u panel it would hide the
+    # numbered states at σ = 0 near the flyer's velocity (1 and 7)
+    common.note(ax_record, f"impact waves in the target:\nprecursor: "
+                f"{precursor.behind.sigma * GPA:.3f} GPa at {precursor.speed:.0f} m/s\n"
+                f"plastic fan: {fan.head_speed:.0f} → {fan.tail_speed:.0f} m/s to "
+                f"{fan.behind.sigma * GPA:.2f} GPa\nplastic shock: {shock.speed:.0f} m/s to "
+                f"{shock.behind.sigma * GPA:.2f} GPa")
     ax_record.set_xlabel("t (µs)")
     ax_record.set_ylabel("free-surface velocity (m/s)")
     ax_record.set_title("Free surface of the target", fontsize=10)

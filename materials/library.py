@@ -51,6 +51,12 @@ Models and fields (``MODELS``):
   of detonation in J/kg); optional ``D_cj``, ``p_cj`` (tabulated, for reports).
   ``materials/data/explosives.toml`` holds the library's explosives.
 
+- ``"viscoplastic"``: the elastic–viscoplastic solid of ``materials.viscoplastic`` (an
+  overstress law; solved on its characteristic grid, not by the engine): ``rho0``,
+  ``yield_strength`` (Pa), ``relaxation_time`` (s, >= 0) and one pair of elastic
+  constants as for ``"elastic-plastic"``; optional ``rate_exponent`` (>= 1, default 1)
+  and ``hugoniot_slope`` (the Us–up slope of the convex equilibrium pressure, default 0).
+
 - ``"phase-change"``: the two-phase solid of ``materials.phase_change``: ``rho0``,
   ``c1``, ``s1`` (low-pressure phase), ``c2``, ``s2`` (high-pressure phase),
   ``transition_stress`` (Pa) and ``transition_strain``; optional ``spall_strength``.
@@ -93,6 +99,7 @@ from .phase_change import PhaseChangeSolid
 from .porous import PorousSolid
 from .products import Products
 from .saturating_plastic import SaturatingPlastic
+from .viscoplastic import Viscoplastic
 
 MODELS: dict[str, dict[str, tuple[str, ...]]] = {
     "mie-gruneisen": {"required": ("rho0", "c0", "s", "gamma0"),
@@ -109,6 +116,9 @@ MODELS: dict[str, dict[str, tuple[str, ...]]] = {
     "saturating-plastic": {"required": ("rho0", "c0", "s", "shear_modulus", "yield_strength",
                                         "saturation_strength", "saturation_strain"),
                            "optional": ("spall_strength",)},
+    "viscoplastic": {"required": ("rho0", "yield_strength", "relaxation_time"),
+                     "optional": ("lambda", "mu", "shear_modulus", "E", "poisson",
+                                  "rate_exponent", "hugoniot_slope")},
     "phase-change": {"required": ("rho0", "c1", "s1", "c2", "s2", "transition_stress",
                                   "transition_strain"),
                      "optional": ("spall_strength",)},
@@ -143,7 +153,8 @@ FIELD_DIMENSIONS: dict[str, str] = {
     "saturation_strength": "stress", "saturation_strain": "dimensionless",
     "A": "stress", "B": "stress", "R1": "dimensionless", "R2": "dimensionless",
     "omega": "dimensionless", "E0": "stress", "q": "specific_energy", "D_cj": "velocity",
-    "p_cj": "stress",
+    "p_cj": "stress", "relaxation_time": "time", "rate_exponent": "dimensionless",
+    "hugoniot_slope": "dimensionless",
 }
 """Physical dimension of every numeric specification field, for readers of files
 that write quantities with units (the dimension names of ``fronttrack.units``)."""
@@ -282,6 +293,8 @@ def listing() -> str:
             lines.append(f"{name:<12} {e['solid_rho0'] / e['alpha0']:>10.0f} "
                          f"{e['alpha0']:>8.3f} {e.get('crush_stress', 0.0) / 1e9:>9.3f}  "
                          f"{e.get('source', '')}")
+            if "caution" in e:
+                lines.append(f"{'':<12} ! {e['caution']}")
     for name in available("phase-change"):
         e = _library()[name]
         lines.append(f"{name:<12} {e['rho0']:>10.0f}  phase change at "
@@ -399,6 +412,11 @@ def material_from_spec(name: str, spec: dict[str, Any]) -> Material:
                                  spall_strength=values.get("spall_strength", math.inf))
     if model in ("explosive-jwl", "explosive-gamma"):
         return _explosive(name, model, values)
+    if model == "viscoplastic":
+        lam, mu = _lame(name, values, _ELASTIC_PLASTIC_CHOICES, "a viscoplastic")
+        return Viscoplastic(name, values["rho0"], lam, mu, values["yield_strength"],
+                            values["relaxation_time"], values.get("rate_exponent", 1.0),
+                            values.get("hugoniot_slope", 0.0))
     if model == "phase-change":
         return PhaseChangeSolid(name, values["rho0"], values["c1"], values["s1"], values["c2"],
                                 values["s2"], values["transition_stress"],

@@ -30,6 +30,7 @@ from materials import (
     solve_boundary,
     solve_contact,
 )
+from materials.library import caution, listing
 from materials.porous import PorousSolid
 
 CU = MieGruneisen("Cu", 8930.0, 3940.0, 1.489, 2.02)
@@ -287,6 +288,9 @@ def test_library_entries_and_spec():
     assert powder.alpha0 == pytest.approx(8930.0 / 6400.0, rel=1e-15)
     for name in ("PS_foam", "SiO2_powder"):
         assert get(name).alpha0 > 2.0
+    # the model's precursor speed against Boade's measurement: said in the entry
+    assert "1.9 km/s" in caution("copper powder") and "3.94 km/s" in caution("Cu_powder")
+    assert "! " + caution("Cu_powder") in listing()
     with pytest.raises(MaterialError, match="alpha0"):
         material_from_spec("bad", {"model": "porous", "solid_rho0": 8930.0, "c0": 3940.0,
                                    "s": 1.489, "gamma0": 2.0, "alpha0": 0.5})
