@@ -334,7 +334,8 @@ def solve_boundary(material, state: State, boundary_at: str, *, stress: float | 
 
         z = material.rho0 * material.sound_speed(state.v, state.e)
         guess = state.sigma + z * target
-        noise = (4.0 * _EPS * (abs(state.u) + abs(float(velocity)) + abs(guess) / z)
+        noise = (4.0 * _EPS * (abs(state.u) + abs(float(velocity))
+                               + (abs(guess) / z if z > 0.0 else abs(target)))
                  + _volume_noise(curve, state, guess))
         local = bracket_near(residual, guess, lo, hi, f_tol=noise)
         if local is not None:
