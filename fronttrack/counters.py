@@ -6,7 +6,7 @@ whose ``stats`` and ``accuracy`` report read it.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 
 @dataclass
@@ -29,7 +29,9 @@ class Counters:
     tension their equation of state carries; ``suppressed_spalls`` and
     ``suppressed_tension`` (Pa): fractures not made because
     they fell inside an earlier fracture zone or spacing, and the largest tension so
-    carried.
+    carried; ``release_floors``: for each material that released toward a lower stress
+    than its equation of state reaches, the highest such floor (Pa) and how many times
+    (``materials.riemann.release_target``).
     """
 
     events: int = 0
@@ -45,3 +47,9 @@ class Counters:
     unresolved_contacts: int = 0
     suppressed_spalls: int = 0
     suppressed_tension: float = 0.0
+    release_floors: dict[str, tuple[float, int]] = field(default_factory=dict)
+
+    def note_release_floor(self, name: str, stress: float) -> None:
+        """Count a face of ``name`` that released only down to ``stress`` (Pa)."""
+        highest, count = self.release_floors.get(name, (stress, 0))
+        self.release_floors[name] = (max(highest, stress), count + 1)

@@ -46,6 +46,11 @@ rounding of the stored volumes."""
 
 RELEASE_PATHS = ("isentrope", "hugoniot")
 
+SPINODAL_FRACTION = 0.05
+"""Isentrope tables end where ``C_L`` falls below this fraction of its value at the label
+state: past it the isentrope nears the spinodal, where the Riemann integral is no
+longer analytic (``characteristics.isentrope``)."""
+
 SNOWPLOW_CEILING = 1e15
 """Highest stress (Pa, 1 PPa, far beyond any plane-wave experiment) a shock into a gas is
 sought up to: a cold gas's Hugoniot reaches any stress at its limiting compression
@@ -154,11 +159,29 @@ class HydrodynamicWaveCurve(StressRange):
     def _release_stress(self, v: float) -> float:
         return self._release_point(v)[0]
 
-    def _last_valid_volume(self, v_edge: float) -> float:
-        """Largest volume up to ``v_edge`` where the release path has a real sound speed."""
+    def release_floor(self) -> float:
+        """Lowest stress (Pa) a release from the ahead state reaches where its fan can be
+        drawn: ``sigma_min``, or on an isentrope the stress 1e-8 inside the end of the
+        volume range or where the Lagrangian sound speed falls to twice
+        ``SPINODAL_FRACTION`` of its value ahead, if higher (the
+        characteristics' isentrope tables end at ``SPINODAL_FRACTION`` of the speed at the
+        state labelling them, which may be another, faster state of the isentrope)."""
+        lowest = self.sigma_min()
+        if self.release == "hugoniot" or lowest <= 0.0:
+            return lowest
+        a, mat = self.ahead, self.material
+        c2_floor = (2.0 * SPINODAL_FRACTION) ** 2 * mat.sound_speed_squared(a.v, a.e)
+        # inside the tables' own margin at the end of the volume range (1e-9)
+        v = self._last_valid_volume(mat.volume_range()[1] * (1.0 - 1e-8), c2_floor)
+        offset = self._release_stress(a.v) - a.sigma
+        return min(max(self._release_stress(v) - offset, lowest), a.sigma)
+
+    def _last_valid_volume(self, v_edge: float, c2_floor: float = 0.0) -> float:
+        """Largest volume up to ``v_edge`` where the release path's squared sound speed is
+        above ``c2_floor`` (by default: where it is real)."""
 
         def valid(v):
-            return self.material.sound_speed_squared(v, self._release_point(v)[1]) > 0.0
+            return self.material.sound_speed_squared(v, self._release_point(v)[1]) > c2_floor
 
         if valid(v_edge):
             return v_edge
