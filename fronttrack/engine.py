@@ -23,6 +23,7 @@ state is constant; every queue entry is either valid or detectably stale.
 from __future__ import annotations
 
 import dataclasses
+import functools
 import heapq
 import itertools
 import math
@@ -32,6 +33,7 @@ from characteristics.isentrope import IsentropeTables
 from materials import State, WavediagramError
 
 from . import initiation, interactions, outgoing, spall, zones
+from .balance import promised_balance
 from .counters import Counters
 from .fronts import UNKNOWN, Front, Region, inside_fan
 from .kinds import FrontKind, Release
@@ -43,11 +45,11 @@ ENTROPY_JUMP_TOLERANCE = 1e-12
 """Entropy contacts whose relative volume jump is below this are rounding, never tracked.
 Larger ones are tracked unless they would reflect less than the negligible stress."""
 
-OLD_REGION_HEAT_FRACTION = 0.01
-"""Beside an old region (one family of the event dropped) an entropy contact is tracked
-when its energy jump per unit volume ``rho0 |e_L - e_R|`` exceeds this fraction of the
-negligible stress (elsewhere: the negligible stress itself); untracked, the new wave
-would run off its jump conditions by that energy for as long as it runs."""
+OLD_REGION_BUDGET = 0.1
+"""Beside an old region (one family of the event dropped) an untracked entropy contact
+leaves the new wave off its jump conditions by the contact's energy jump for as long as
+it runs: the contact is tracked when the energy that could so be made, ``rho0 |e_L -
+e_R| C_L (t_end - t)``, exceeds this fraction of the balance the run promises."""
 
 FRACTURE, FORMATION, SITE, PAIR = 0, 1, 2, 2
 """Queue priorities at equal times: a fracture or a shock formation happens before the
@@ -442,9 +444,9 @@ class Engine:
         355: a PMMA shock overtaking another, its 0.4 MPa reflection dropped, ran into a
         state 1.2 kJ/kg above its Hugoniot and made 3 % of the energy; restating that
         region moved the creation to the release shock running into it): the contact
-        is then kept when its energy jump exceeds ``OLD_REGION_HEAT_FRACTION`` of the
-        negligible stress (all of them: 13 % made in a 2-ray isolated stack, whose
-        contacts then carry the dropped waves' stress mismatch).
+        is then kept when the energy it could make exceeds ``OLD_REGION_BUDGET`` of
+        the promised balance (keeping all of them made 13 % in a 2-ray isolated stack,
+        whose contacts then carry the dropped waves' stress mismatch).
         """
         counters, res = self.counters, self.resolution
         jump = abs(left.v - right.v) / max(left.v, right.v)
@@ -453,9 +455,11 @@ class Engine:
         heat = material.rho0 * abs(left.e - right.e) / res.stress_scale
         keep = self.acc.entropy_contacts and max(jump, heat) > ENTROPY_JUMP_TOLERANCE
         if keep and res.negligible > 0.0 and math.isfinite(left.v + right.v):
-            heat_floor = res.negligible * (OLD_REGION_HEAT_FRACTION if old_beyond else 1.0)
+            heat = material.rho0 * abs(left.e - right.e)
             keep = (material.contact_reflection(left, right, res.stress_scale) > res.negligible
-                    or material.rho0 * abs(left.e - right.e) > heat_floor)
+                    or heat > res.negligible
+                    or old_beyond and heat * material.sound_speed(left.v, left.e)
+                    * (self.t_end - t) > OLD_REGION_BUDGET * self._energy_budget)
         if keep and _contact_within(group, x, self.acc.contact_resolution):
             keep = False
             counters.unresolved_contacts += 1
@@ -464,6 +468,14 @@ class Engine:
         counters.neglected_entropy = max(counters.neglected_entropy, jump)
         counters.neglected_contacts += jump > ENTROPY_JUMP_TOLERANCE
         return None
+
+    @functools.cached_property
+    def _energy_budget(self) -> float:
+        """The balance the run promises (J/m^2): the promised fraction of the initial
+        energy content ``sum m (|e| + u^2/2)`` (``fronttrack.balance``)."""
+        content = sum(layer.material.rho0 * layer.thickness * (abs(s.e) + 0.5 * s.u * s.u)
+                      for layer, s in zip(self.scene.layers, self.initial_states, strict=True))
+        return promised_balance(self.resolution.report()) * content
 
     def _neglected_contact_state(self, left: State, right: State, material) -> State:
         """The one state that replaces two star states whose entropy contact is not tracked.
