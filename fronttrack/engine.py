@@ -23,7 +23,6 @@ state is constant; every queue entry is either valid or detectably stale.
 from __future__ import annotations
 
 import dataclasses
-import functools
 import heapq
 import itertools
 import math
@@ -33,7 +32,6 @@ from characteristics.isentrope import IsentropeTables
 from materials import State, WavediagramError
 
 from . import initiation, interactions, outgoing, spall, zones
-from .balance import promised_balance
 from .counters import Counters
 from .fronts import UNKNOWN, Front, Region, inside_fan
 from .kinds import FrontKind, Release
@@ -44,12 +42,6 @@ from .solution import EventRecord, Solution
 ENTROPY_JUMP_TOLERANCE = 1e-12
 """Entropy contacts whose relative volume jump is below this are rounding, never tracked.
 Larger ones are tracked unless they would reflect less than the negligible stress."""
-
-OLD_REGION_BUDGET = 0.1
-"""Beside an old region (one family of the event dropped) an untracked entropy contact
-leaves the new wave off its jump conditions by the contact's energy jump for as long as
-it runs: the contact is tracked when the energy that could so be made, ``rho0 |e_L -
-e_R| C_L (t_end - t)``, exceeds this fraction of the balance the run promises."""
 
 FRACTURE, FORMATION, SITE, PAIR = 0, 1, 2, 2
 """Queue priorities at equal times: a fracture or a shock formation happens before the
@@ -387,14 +379,11 @@ class Engine:
             region_left.state if region_left is not None else None)
         right_star = sol.right_star if right_specs is not None else (
             region_right.state if region_right is not None else None)
-        # one family dropped: the region beyond the other's waves is an old one
-        old_beyond = (left_specs is None) != (right_specs is None)
         left_specs = left_specs or []
         right_specs = right_specs or []
         middle = site if site is not None else new_site
         if middle is None and left_star is not None and right_star is not None:
-            middle = self._entropy_contact(left_star, right_star, material_left, t, x, group,
-                                           old_beyond)
+            middle = self._entropy_contact(left_star, right_star, material_left, t, x, group)
             if middle is None:
                 left_star = right_star = self._neglected_contact_state(
                     left_star, right_star, material_left)
@@ -423,7 +412,7 @@ class Engine:
             site=middle.id if middle is not None else None))
 
     def _entropy_contact(self, left: State, right: State, material, t: float,
-                         x: float, group, old_beyond: bool = False) -> Front | None:
+                         x: float, group) -> Front | None:
         """A contact for the entropy jump between two star states, if it matters.
 
         A contact that would reflect less than the negligible stress from the scene's
@@ -437,16 +426,6 @@ class Engine:
         ``ENTROPY_JUMP_TOLERANCE`` are rounding.  So is, when the scene sets
         ``accuracy.contact_resolution``, a contact born closer than that to the
         neighbouring contact; those are counted.
-
-        ``old_beyond``: one family was dropped, so one of the two states is an older
-        region's, bordered beyond by a front that may run into it.  No one state then
-        keeps both fronts on their jump conditions without making energy (campaign seed
-        355: a PMMA shock overtaking another, its 0.4 MPa reflection dropped, ran into a
-        state 1.2 kJ/kg above its Hugoniot and made 3 % of the energy; restating that
-        region moved the creation to the release shock running into it): the contact
-        is then kept when the energy it could make exceeds ``OLD_REGION_BUDGET`` of
-        the promised balance (keeping all of them made 13 % in a 2-ray isolated stack,
-        whose contacts then carry the dropped waves' stress mismatch).
         """
         counters, res = self.counters, self.resolution
         jump = abs(left.v - right.v) / max(left.v, right.v)
@@ -455,11 +434,8 @@ class Engine:
         heat = material.rho0 * abs(left.e - right.e) / res.stress_scale
         keep = self.acc.entropy_contacts and max(jump, heat) > ENTROPY_JUMP_TOLERANCE
         if keep and res.negligible > 0.0 and math.isfinite(left.v + right.v):
-            heat = material.rho0 * abs(left.e - right.e)
             keep = (material.contact_reflection(left, right, res.stress_scale) > res.negligible
-                    or heat > res.negligible
-                    or old_beyond and heat * material.sound_speed(left.v, left.e)
-                    * (self.t_end - t) > OLD_REGION_BUDGET * self._energy_budget)
+                    or material.rho0 * abs(left.e - right.e) > res.negligible)
         if keep and _contact_within(group, x, self.acc.contact_resolution):
             keep = False
             counters.unresolved_contacts += 1
@@ -468,14 +444,6 @@ class Engine:
         counters.neglected_entropy = max(counters.neglected_entropy, jump)
         counters.neglected_contacts += jump > ENTROPY_JUMP_TOLERANCE
         return None
-
-    @functools.cached_property
-    def _energy_budget(self) -> float:
-        """The balance the run promises (J/m^2): the promised fraction of the initial
-        energy content ``sum m (|e| + u^2/2)`` (``fronttrack.balance``)."""
-        content = sum(layer.material.rho0 * layer.thickness * (abs(s.e) + 0.5 * s.u * s.u)
-                      for layer, s in zip(self.scene.layers, self.initial_states, strict=True))
-        return promised_balance(self.resolution.report()) * content
 
     def _neglected_contact_state(self, left: State, right: State, material) -> State:
         """The one state that replaces two star states whose entropy contact is not tracked.
