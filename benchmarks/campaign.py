@@ -80,12 +80,22 @@ def main() -> None:
     parser.add_argument("--time-limit", type=float, default=5.0)
     parser.add_argument("--workers", type=int, default=2)
     parser.add_argument("--out", type=Path, default=HERE / "campaign.json")
+    parser.add_argument("--log", type=Path, default=None,
+                        help="append each outcome as one JSON line when it is known (a "
+                             "campaign stopped early keeps what it ran)")
     args = parser.parse_args()
     seeds = range(args.first, args.first + args.scenes)
     from concurrent.futures import ThreadPoolExecutor
 
+    def one(seed):
+        result = run_scene(seed, args.time_limit)
+        if args.log is not None:
+            with args.log.open("a") as log:
+                log.write(json.dumps(result) + "\n")
+        return result
+
     with ThreadPoolExecutor(args.workers) as pool:
-        results = list(pool.map(lambda s: run_scene(s, args.time_limit), seeds))
+        results = list(pool.map(one, seeds))
     table = collections.Counter(r["outcome"] for r in results)
     args.out.write_text(json.dumps({"time_limit_s": args.time_limit, "table": table,
                                     "scenes": results}, indent=1))

@@ -47,6 +47,7 @@ import numpy as np
 
 from materials import IdealGas, State, StateOutOfRangeError
 from materials.base import AffineEnergyMaterial
+from materials.wavecurves import SPINODAL_FRACTION
 
 from . import chebyshev
 
@@ -56,9 +57,6 @@ PANEL_FRACTION = 0.05
 MAX_HALVINGS = 10
 """A panel whose series do not converge is halved, at most this many times."""
 
-SPINODAL_FRACTION = 0.05
-"""The table ends where ``C_L`` falls below this fraction of its value at the label
-state: past it the isentrope nears the spinodal, where ``phi`` is no longer analytic."""
 
 LABEL_TOLERANCE = 1e-12
 """Two states lie on one isentrope when their stresses at equal volume differ by less

@@ -117,7 +117,13 @@ def _run_on_table(coords, crossings, cells, first, last, lo, hi, table):
     minus = _invariant(coords, crossings, cells, first, last, -1)
     at = np.array(knot_x)
     jp, jm = plus(at), minus(at)
-    sigma, v, e, _ = table.arrays_at_phi(0.5 * (jp - jm))
+    # the two invariants are interpolated apart, so their half difference may step past
+    # the cells' own range (and past the table's end where a release stopped at the end
+    # of its equation of state: Cu released from 286 GPa); it is held within that range
+    own = [0.5 * (cells[i].invariants[0] - cells[i].invariants[1])
+           for i in range(first, last + 1)]
+    phi = np.clip(0.5 * (jp - jm), min(own), max(own))
+    sigma, v, e, _ = table.arrays_at_phi(phi)
     u = 0.5 * (jp + jm)
     states = [State(sigma=float(a), u=float(b), v=float(c), e=float(d))
               for a, b, c, d in zip(sigma, u, v, e, strict=True)]

@@ -6,7 +6,7 @@ whose ``stats`` and ``accuracy`` report read it.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 
 @dataclass
@@ -31,7 +31,10 @@ class Counters:
     they fell inside an earlier fracture zone or spacing, and the largest tension so
     carried; ``coalesced``: pairs of fronts made one because they ran closer than the
     records resolve (``fronttrack.coalesce``), with the momentum (kg/(m^2 s), absolute
-    sum) and energy (J/m^2, signed: never positive) their strips moved.
+    sum) and energy (J/m^2, signed: never positive) their strips moved;
+    ``release_floors``: for each material that released toward a lower stress than its
+    equation of state reaches, the highest such floor (Pa) and how many times
+    (``materials.riemann.release_target``).
     """
 
     events: int = 0
@@ -50,3 +53,9 @@ class Counters:
     coalesced: int = 0
     coalesced_momentum: float = 0.0
     coalesced_energy: float = 0.0
+    release_floors: dict[str, tuple[float, int]] = field(default_factory=dict)
+
+    def note_release_floor(self, name: str, stress: float) -> None:
+        """Count a face of ``name`` that released only down to ``stress`` (Pa)."""
+        highest, count = self.release_floors.get(name, (stress, 0))
+        self.release_floors[name] = (max(highest, stress), count + 1)

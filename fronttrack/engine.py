@@ -368,6 +368,8 @@ class Engine:
     def replace(self, group, site, new_site, sol, region_left, region_right, t, x, incoming,
                 kind) -> None:
         """Replace ``group`` by the waves of the Riemann solution ``sol`` and the site."""
+        if sol.release_floor is not None:
+            self.counters.note_release_floor(*sol.release_floor)
         material_left = region_left.material if region_left is not None else None
         material_right = region_right.material if region_right is not None else None
         left_specs = outgoing.wave_fronts(self, sol.left_waves, material_left, t, x, incoming,

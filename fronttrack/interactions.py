@@ -230,7 +230,8 @@ def combine(left_solution, right_solution) -> RiemannSolution:
                            right_waves=right_solution.right_waves,
                            left_star=left_solution.left_star,
                            right_star=right_solution.right_star, separated=True,
-                           bonded_sigma=0.0)
+                           bonded_sigma=0.0, release_floor=(left_solution.release_floor
+                                                            or right_solution.release_floor))
 
 
 def fracture(engine, plan) -> None:

@@ -18,7 +18,7 @@ from dataclasses import dataclass
 
 from characteristics.products_table import fan_table
 from characteristics.simple_waves import discretise_fan
-from materials import Fan, State
+from materials import Fan, State, StateOutOfRangeError
 
 from .fronts import MIXED, UNKNOWN, Front
 from .kinds import FrontKind
@@ -108,7 +108,8 @@ def _weak_shock_ray(engine, shock, material, t, x, parent, direction,
     an isentrope table.  As a ray it joins the lattices of the fans around it instead
     of meeting each of their rays in a Riemann problem; compression rays that converge
     form a shock again where they meet.  ``None`` if the shock is stronger than the
-    step, or its states have no common table.
+    step, or its states have no common table (or one lies past the table's end: a face
+    whose release stopped at the end of its equation of state, ``release_target``).
     """
     res = engine.resolution
     if (res.release != "isentrope" or abs(shock.behind.sigma - shock.ahead.sigma) > res.step
@@ -117,7 +118,10 @@ def _weak_shock_ray(engine, shock, material, t, x, parent, direction,
     table = engine.tables.table(material, shock.ahead)
     if table is None or not table.matches(shock.behind, engine.tables.tolerance):
         return None
-    ahead, behind = table.invariants(shock.ahead), table.invariants(shock.behind)
+    try:
+        ahead, behind = table.invariants(shock.ahead), table.invariants(shock.behind)
+    except StateOutOfRangeError:  # a state at the end of the table's equation of state
+        return None
     if not table.resolves(abs(ahead[0] - behind[0]) + abs(ahead[1] - behind[1])):
         return None
     middle = (0.5 * (ahead[0] + behind[0]), 0.5 * (ahead[1] + behind[1]))

@@ -59,6 +59,12 @@ def run(scene: Scene, progress=None) -> Solution:
     cavitated = ([f"{report['cavitations']} fracture(s) where a material without a spall "
                   "strength was pulled to the most tension its equation of state carries "
                   "(cavitation; see spall)"] if report.get("cavitations") else [])
-    report["warnings"] = (report.get("warnings", []) + cavitated + fits.fit_warnings(solution)
+    floors = [f"{name}: a face released toward zero stress stopped at {floor['stress'] / 1e9:.4g} "
+              "GPa, the lowest its equation of state reaches on the release path (the end of "
+              "its volume range); the expansion beyond (melt, vapour) is not modelled and the "
+              f"stress kept there loses energy ({floor['faces']} face event(s))"
+              for name, floor in report.get("release_floors", {}).items()]
+    report["warnings"] = (report.get("warnings", []) + cavitated + floors
+                          + fits.fit_warnings(solution)
                           + balance.warnings(report, report["balance"]))
     return solution

@@ -239,6 +239,8 @@ class Solution:
             "neglected_entropy_contacts": counters.neglected_contacts,
             "neglected_contact_energy": counters.neglected_contact_energy,
             "cavitations": counters.cavitations,
+            "release_floors": {name: {"stress": stress, "faces": count}
+                               for name, (stress, count) in counters.release_floors.items()},
             "contact_resolution": acc.contact_resolution,
             "contacts_below_resolution": counters.unresolved_contacts,
             "coalesced_fronts": counters.coalesced,

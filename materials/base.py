@@ -186,10 +186,13 @@ class Material(ABC):
 
         Acoustically a contact between impedances ``Z_l`` and ``Z_r`` reflects
         ``amplitude |Z_l - Z_r| / (Z_l + Z_r)``; the reference density cancels, so
-        the Lagrangian sound speeds stand for the impedances.
+        the Lagrangian sound speeds stand for the impedances.  Between two states with
+        no sound speed (cold gases) nothing crosses, and nothing is reflected: 0.
         """
         c_l = self.sound_speed(left.v, left.e)
         c_r = self.sound_speed(right.v, right.e)
+        if not c_l + c_r > 0.0:
+            return 0.0
         return amplitude * abs(c_l - c_r) / (c_l + c_r)
 
     def wave_curve(self, ahead: State, direction: int, release: str = "isentrope"):

@@ -29,6 +29,10 @@ class IdealGas(AffineEnergyMaterial):
     """The isentrope ``p = p_a (v_a / v)^gamma`` is closed-form, good to a few ulps of p
     itself however far it expands (wave curves then resolve near-vacuum releases)."""
 
+    unbounded_hugoniot = True
+    """The Hugoniot reaches any pressure at its limiting compression (wave curves then
+    shock a cold gas to that compression: the snowplow)."""
+
     def __init__(self, name: str, gamma: float, rho0: float, cv: float | None = None):
         self.name = name
         gamma = require_number("gamma", gamma, name)

@@ -45,7 +45,9 @@ class RiemannSolution:
     the states on the two sides of the contact (``None`` on a boundary's outer
     side).  ``separated``: the contact opened.  ``bonded_sigma``: the contact
     stress the problem would have had without separation (Pa); below
-    ``-tensile_strength`` when ``separated``.
+    ``-tensile_strength`` when ``separated``.  ``release_floor``: ``(material name,
+    stress in Pa)`` when a face released toward a lower stress than its equation of
+    state reaches (``release_target``), else ``None``.
     """
 
     left_waves: tuple
@@ -54,6 +56,7 @@ class RiemannSolution:
     right_star: State | None
     separated: bool = False
     bonded_sigma: float = math.nan
+    release_floor: tuple[str, float] | None = None
 
     def fronts_in_order(self) -> list:
         """All waves in their order along X just after the interaction."""
@@ -272,30 +275,57 @@ def _bonded_estimate(phi, curve_l, curve_r, floor) -> float:
         return lowest
 
 
+def release_target(curve, sigma: float) -> tuple[float, tuple[str, float] | None]:
+    """The stress (Pa) a face released toward ``sigma`` ends at, and the floor it met.
+
+    A material shocked beyond the range of its equation of state's release paths (Cu at
+    7 km/s: its Mie-Grüneisen isentrope from 286 GPa leaves the fit's volume range,
+    ``v0 (1 + 0.3 / s)``, at 1.6 GPa) cannot release to a free surface inside that
+    equation of state.  The face then releases to the lowest stress the release path
+    reaches (the state at the volume limit) and keeps it: the expansion beyond, into
+    liquid and vapour, is not modelled.  The pressure the face keeps does work on
+    nothing, so the run loses energy (never makes it) and its momentum balance shows
+    the impulse; the run warns with the material and the stress.  Returns ``(sigma,
+    None)`` when ``sigma`` is reachable or when the lowest stress is a tension (a
+    tension beyond the range stays an error: the material cavitates elsewhere).
+    """
+    lowest = getattr(curve, "release_floor", curve.sigma_min)()
+    if sigma < lowest and lowest > 0.0:
+        return lowest, (curve.material.name, lowest)
+    return sigma, None
+
+
 def _separate(curve_l, curve_r, bonded_sigma: float):
     """Both sides unload to a free surface; a gap opens between them."""
+    sigma_l, floor_l = release_target(curve_l, 0.0)
+    sigma_r, floor_r = release_target(curve_r, 0.0)
     return RiemannSolution(
-        left_waves=curve_l.waves(0.0),
-        right_waves=curve_r.waves(0.0),
-        left_star=curve_l.state_at(0.0),
-        right_star=curve_r.state_at(0.0),
+        left_waves=curve_l.waves(sigma_l),
+        right_waves=curve_r.waves(sigma_r),
+        left_star=curve_l.state_at(sigma_l),
+        right_star=curve_r.state_at(sigma_r),
         separated=True,
         bonded_sigma=bonded_sigma,
+        release_floor=floor_l or floor_r,
     )
 
 
 def _against_vacuum(curve_l, left: State, curve_r, right: State) -> RiemannSolution:
     """A side expanded to vacuum sends no wave; the other unloads to a free surface."""
+    floors = []
+
     def side(curve, state):
         if not math.isfinite(state.v):
             return (), state
-        return curve.waves(0.0), curve.state_at(0.0)
+        sigma, floor = release_target(curve, 0.0)
+        floors.append(floor)
+        return curve.waves(sigma), curve.state_at(sigma)
 
     left_waves, left_star = side(curve_l, left)
     right_waves, right_star = side(curve_r, right)
     return RiemannSolution(left_waves=left_waves, right_waves=right_waves,
                            left_star=left_star, right_star=right_star, separated=True,
-                           bonded_sigma=0.0)
+                           bonded_sigma=0.0, release_floor=next(filter(None, floors), None))
 
 
 def solve_boundary(material, state: State, boundary_at: str, *, stress: float | None = None,
@@ -321,8 +351,9 @@ def solve_boundary(material, state: State, boundary_at: str, *, stress: float | 
         compression = (float(stress) - state.sigma if stress is not None
                        else direction * (float(velocity) - state.u))
         curve = curve.settle(-compression)
+    floor = None
     if stress is not None:
-        sigma = float(stress)
+        sigma, floor = release_target(curve, float(stress))
         curve.check_stress(sigma)
     else:
         target = direction * (float(velocity) - state.u)  # required g
@@ -334,7 +365,8 @@ def solve_boundary(material, state: State, boundary_at: str, *, stress: float | 
 
         z = material.rho0 * material.sound_speed(state.v, state.e)
         guess = state.sigma + z * target
-        noise = (4.0 * _EPS * (abs(state.u) + abs(float(velocity)) + abs(guess) / z)
+        noise = (4.0 * _EPS * (abs(state.u) + abs(float(velocity))
+                               + (abs(guess) / z if z > 0.0 else abs(target)))
                  + _volume_noise(curve, state, guess))
         local = bracket_near(residual, guess, lo, hi, f_tol=noise)
         if local is not None:
@@ -354,5 +386,5 @@ def solve_boundary(material, state: State, boundary_at: str, *, stress: float | 
         star = dataclasses.replace(star, u=float(velocity))
     waves = curve.waves(sigma)
     if direction == LEFT:
-        return RiemannSolution(waves, (), star, None, bonded_sigma=sigma)
-    return RiemannSolution((), waves, None, star, bonded_sigma=sigma)
+        return RiemannSolution(waves, (), star, None, bonded_sigma=sigma, release_floor=floor)
+    return RiemannSolution((), waves, None, star, bonded_sigma=sigma, release_floor=floor)

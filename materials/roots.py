@@ -33,7 +33,8 @@ def bracketed_newton(
 ) -> float:
     """Root of ``func`` in ``[lo, hi]``; ``func(x)`` returns ``(f, df/dx)``.
 
-    ``f(lo)`` and ``f(hi)`` must differ in sign (a zero at an end is accepted).
+    ``f(lo)`` and ``f(hi)`` must differ in sign (a zero at an end, or an end within
+    ``f_tol`` of zero, is accepted).
     Iteration stops when the bracket is narrower than ``rel_tol * |x| + abs_tol``
     (or one ulp of x), or when ``|f| <= f_tol``: callers whose ``f`` is computed
     with a known rounding noise pass that noise as ``f_tol``, so that the iteration
@@ -50,6 +51,11 @@ def bracketed_newton(
     if f_hi == 0.0:
         return hi
     if (f_lo > 0.0) == (f_hi > 0.0):
+        # an end within the caller's noise is the root (a jump of an ulp of stress ends
+        # where it starts, and its residual there is rounding of either sign)
+        end, f_end = (lo, f_lo) if abs(f_lo) <= abs(f_hi) else (hi, f_hi)
+        if abs(f_end) <= f_tol:
+            return end
         raise NoSolutionError(
             f"root not bracketed in [{lo:.6g}, {hi:.6g}]: f = {f_lo:.6g}, {f_hi:.6g}"
         )

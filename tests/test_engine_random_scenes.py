@@ -59,8 +59,10 @@ def test_random_stack_solves_or_names_its_limit(seed):
         return
     except (NoSolutionError, StateOutOfRangeError) as error:
         # a tension or compression beyond an equation of state: named, with the range
-        # (seed 6: a water face at a gap that cannot unload to zero stress)
-        assert "beyond" in str(error) or "outside" in str(error)
+        # (seed 6: a water face at a gap that cannot unload to zero stress releases to
+        # the end of its equation of state, and a fan from there leaves the isentrope
+        # table labelling it: "leaves the range")
+        assert any(words in str(error) for words in ("beyond", "outside", "leaves the range"))
         return
     assert_no_nan(solution)
     assert_contacts_continuous(solution)

@@ -359,11 +359,14 @@ def test_nearly_cold_gas_impact(gas):
     """Two nearly cold gas layers colliding at V: strong shocks, rho*/rho0 -> (g+1)/(g-1).
 
     Exactly cold (p = 0) the Hugoniot is degenerate (p = 0 at every volume but the
-    limiting one), which the volume-parameterised curve cannot represent: the solver
-    says so instead of dividing by the zero impedance.
+    limiting one): the snowplow, each side swept to rho0 (g+1)/(g-1) by a shock with
+    p = rho0 (g+1)/2 (dU)^2 and e = (dU)^2/2 (the jump conditions with v_b = v_lim).
     """
-    with pytest.raises(NoSolutionError):
-        solve_contact(gas, gas.reference_state(u=100.0), gas, gas.reference_state())
+    sol = solve_contact(gas, gas.reference_state(u=100.0), gas, gas.reference_state())
+    assert sol.right_star.u == pytest.approx(50.0, rel=1e-12)
+    assert sol.right_star.sigma == pytest.approx(gas.rho0 * 1.2 * 50.0**2, rel=1e-11)
+    assert sol.right_star.e == pytest.approx(0.5 * 50.0**2, rel=1e-11)
+    assert sol.right_star.rho == pytest.approx(gas.rho0 * 6.0, rel=1e-11)
     cold = gas.state_from_pressure(gas.rho0, 1e-9 * gas.rho0 * 50.0**2)
     sol = solve_contact(gas, cold.moving(100.0), gas, cold)
     assert sol.right_star.u == pytest.approx(50.0, rel=1e-12)
