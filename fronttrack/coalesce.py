@@ -18,8 +18,9 @@ most 1e-3 of the stress scale):
   satisfies the momentum jump condition ``sigma_L - sigma_R = +-rho0 C (u_L - u_R)``
   (on a linear branch it does, to rounding, and its energy jump is the trapezoid of a
   straight line, as each part's is: the merged wave is exact);
-- two contacts whose outer states ``L`` and ``R`` have a negligible stress and
-  velocity difference;
+- two contacts whose outer states ``L`` and ``R`` differ in stress and velocity no
+  more than across the wider of the two (a contact carries the mismatch a dropped
+  wave leaves; coalescing never widens it);
 
 and ``d <= l``, or, for a weak pair, ``w d <= VISIBILITY * tol * l`` with ``d <= REACH
 * l``, where ``w`` is the weaker front's strength (a wave's stress jump; a contact's
@@ -116,7 +117,7 @@ def _coalesce(engine, a: Front, b: Front, t: float) -> Front | None:
         mismatch = (sl.sigma - sr.sigma) - a.direction * rho0 * abs(a.speed) * (sl.u - sr.u)
         if abs(mismatch) > JUMP_TOLERANCE * res.stress_scale:
             return None
-    elif not res.is_negligible(sl.sigma - sr.sigma, sl.u - sr.u):
+    elif not _no_wider(sl, sm, sr, 1e-12 * res.stress_scale):
         return None
     share = _energy_share(sl, sm, sr)
     if share is None:
@@ -160,6 +161,17 @@ def _budget(engine, t: float) -> tuple[float, float]:
     held = engine.coalesce_budget or (0.0, 0.0)
     engine.coalesce_budget = (max(held[0], promise * momentum), max(held[1], promise * energy))
     return engine.coalesce_budget
+
+
+def _no_wider(left, middle, right, rounding: float) -> bool:
+    """Whether the stress and velocity mismatch across one contact from ``left`` to
+    ``right`` is no wider than across the wider of the two it replaces (contacts carry
+    the mismatch a dropped wave leaves; coalescing must not add to it)."""
+    for name, slack in (("sigma", rounding), ("u", 0.0)):
+        a, b, c = (getattr(s, name) for s in (left, middle, right))
+        if abs(a - c) > max(abs(a - b), abs(b - c)) + slack:
+            return False
+    return True
 
 
 def _tolerance(res) -> float:

@@ -305,12 +305,13 @@ def test_engine_impact_on_copper_powder():
                   left=Boundary("free"), right=Boundary("free"), t_end=0.45e-6,
                   accuracy=Accuracy(rays_per_fan=2, max_events=2000))
     solution = run(scene)
-    assert_no_nan(solution)
-    assert assert_shock_jumps(solution) > 0
-    assert_contacts_continuous(solution)
     impact = solve_contact(get("Cu"), get("Cu").reference_state(400.0), powder,
                            powder.reference_state())
     precursor, compaction = impact.right_waves
+    assert_no_nan(solution)
+    assert assert_shock_jumps(solution) > 0
+    # a dropped weak compaction wave carries its stress at the compaction impedance
+    assert_contacts_continuous(solution, wave_impedance=powder.rho0 * compaction.speed)
     fronts = sorted((f for f in solution.fronts if f.kind == "shock" and f.direction > 0
                      and f.t0 == 0.0), key=lambda f: -f.speed)
     assert [f.speed for f in fronts] == pytest.approx([precursor.speed, compaction.speed],
