@@ -37,7 +37,7 @@ def stacks(draw, release: str):
     return Scene(layers=layers, t_end=draw(st.sampled_from([0.5, 1.0, 2.0])) * length / 3000,
                  left=Boundary(draw(st.sampled_from(["free", "wall"]))),
                  right=Boundary(draw(st.sampled_from(["free", "wall"]))),
-                 accuracy=Accuracy(release=release, rays_per_fan=8, max_events=2000))
+                 accuracy=Accuracy(release=release, rays_per_fan=8, max_events=1000))
 
 
 def _solved(scene):
