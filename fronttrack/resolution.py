@@ -25,8 +25,9 @@ of a fan, and no compression wave taken for a characteristic, spans more than th
 Waves weaker than the negligible stress are dropped (and counted).  The default is
 ``NEGLIGIBLE_FRACTION`` of the stress scale, raised to ``NEGLIGIBLE_STEP_FRACTION`` of
 the step where fans can form (their echoes a thousand times below the resolution
-change nothing) and to ``NEGLIGIBLE_SPLIT_FRACTION`` of the scale where elastic–plastic
-solids split every wave in two.  A wave is negligible only when its velocity jump is
+change nothing) and to ``NEGLIGIBLE_SPLIT_FRACTION`` of the scale where small-strain
+elastic–plastic solids split every wave in two (``NEGLIGIBLE_NONLINEAR_SPLIT_FRACTION``
+where other solids split waves).  A wave is negligible only when its velocity jump is
 too, below ``negligible * velocity_scale / stress_scale``: a wave of a few MPa in a
 gas can carry hundreds of m/s.
 """
@@ -76,10 +77,15 @@ NEGLIGIBLE_STEP_FRACTION = 1e-3
 """In a scene with fans the negligible wave is at least this fraction of the step."""
 
 NEGLIGIBLE_SPLIT_FRACTION = 1e-4
-"""In a scene with elastic–plastic solids the negligible wave is at least this fraction
-of the stress scale: there every interaction splits waves into an elastic and a
-plastic part, and the weakest parts are not worth an event (the trains they form are
-coalesced, ``fronttrack.coalesce``)."""
+"""In a scene with small-strain elastic–plastic solids the negligible wave is at least
+this fraction of the stress scale: there every interaction splits waves into an
+elastic and a plastic part, and the weakest parts are not worth an event; the trains
+they form are coalesced (``fronttrack.coalesce``), which keeps their count bounded."""
+
+NEGLIGIBLE_NONLINEAR_SPLIT_FRACTION = 1e-3
+"""The same for scenes with other splitting solids (finite-strain plasticity, porous
+compaction, phase change, explosives), whose wave trains are not coalesced: their
+weak waves would otherwise multiply."""
 
 
 @dataclass(frozen=True)
@@ -235,8 +241,11 @@ def _negligible(scene: Scene, scale: float, step: float, makes_fans: bool) -> fl
     negligible = NEGLIGIBLE_FRACTION * scale
     if makes_fans:
         negligible = max(negligible, NEGLIGIBLE_STEP_FRACTION * step)
-    if any(layer.material.splits_waves for layer in scene.layers):
-        negligible = max(negligible, NEGLIGIBLE_SPLIT_FRACTION * scale)
+    splitting = [layer.material for layer in scene.layers if layer.material.splits_waves]
+    if splitting:
+        fraction = (NEGLIGIBLE_SPLIT_FRACTION if all(m.linear_branches for m in splitting)
+                    else NEGLIGIBLE_NONLINEAR_SPLIT_FRACTION)
+        negligible = max(negligible, fraction * scale)
     return negligible
 
 

@@ -101,6 +101,10 @@ class Material(ABC):
     splits_waves: bool = False
     """Whether one wave of this model can split into several (an elastic precursor
     and a plastic wave): such solids multiply waves at every interaction."""
+    linear_branches: bool = False
+    """Whether every wave of one family on one branch moves at one speed (stress linear
+    in strain on each branch): trains of such waves are coalesced
+    (``fronttrack.coalesce``)."""
 
     @functools.cached_property
     def v0(self) -> float:

@@ -112,6 +112,7 @@ class ElasticPlastic(Material):
     is_linear = False
     makes_fans = False
     splits_waves = True
+    linear_branches = True
     """Not a single-speed solid: waves travel at C0 or CB (``HydrodynamicWaveCurve``
     reads ``is_linear`` to force Hugoniot release at one speed)."""
 
