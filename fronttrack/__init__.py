@@ -28,6 +28,7 @@ from .design import (
     window_choice,
 )
 from .errors import SceneError
+from .fits import FitExtrapolationWarning
 from .impedance_match import MatchRow, match
 from .material import material
 from .runner import run
@@ -45,7 +46,8 @@ FIGURES = {name: "plotting" for name in (
 """Figure functions and the module that holds each, imported on first use."""
 
 __all__ = [
-    "Accuracy", "Boundary", "History", "Layer", "MatchRow", "MaterialError", "OpticalWindow",
+    "Accuracy", "Boundary", "FitExtrapolationWarning", "History", "Layer", "MatchRow",
+    "MaterialError", "OpticalWindow",
     "Probe", "Scene", "SceneError", "Solution", "SpallCriterion", "SpallRecord", "State",
     "StateOutOfRangeError", "WavediagramError", "Window", "WindowChoice", "flyer_for_spall",
     "load_scene", "match", "material", "one_dimensional_window", "optical_window",

@@ -23,6 +23,7 @@ import dataclasses
 import json
 import os
 import sys
+import warnings
 from importlib import resources
 from pathlib import Path
 
@@ -36,6 +37,7 @@ from .cli_exports import (
     write_window_records,
 )
 from .cli_sweep import add_sweep_command
+from .fits import FitExtrapolationWarning
 from .impedance_match import detonation_match, format_table, impedance_match, to_json_dict
 from .outputs import OutputSet, check_output_dir, check_output_file
 from .runner import run
@@ -181,13 +183,17 @@ def _match(args) -> int:
         check_output_file(args.json, "--json")
     flyer = library.get(args.flyer)
     stack = [library.get(name) for name in args.layers]
-    if args.velocity == "detonation":  # an explosive's CJ detonation drives the stack
-        rows = detonation_match(flyer, stack, release=args.release, mirrored=args.mirrored)
-    else:
-        velocity = parse_quantity(args.velocity, "velocity", "velocity")
-        rows = impedance_match(flyer, velocity, stack, release=args.release,
-                               mirrored=args.mirrored)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always", FitExtrapolationWarning)
+        if args.velocity == "detonation":  # an explosive's CJ detonation drives the stack
+            rows = detonation_match(flyer, stack, release=args.release, mirrored=args.mirrored)
+        else:
+            velocity = parse_quantity(args.velocity, "velocity", "velocity")
+            rows = impedance_match(flyer, velocity, stack, release=args.release,
+                                   mirrored=args.mirrored)
     print(format_table(rows))
+    for warning in caught:
+        _say(f"wavediagram: warning: {warning.message}")
     if args.json is not None:
         with OutputSet() as outputs:
             outputs.temporary(args.json).write_text(json.dumps(to_json_dict(rows), indent=2))

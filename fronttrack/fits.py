@@ -34,8 +34,20 @@ def fit_warnings(solution) -> list[str]:
         key = id(material)
         if key not in densest or v < densest[key][1]:
             densest[key] = (material, v)
+    return extrapolations(densest.values())
+
+
+class FitExtrapolationWarning(UserWarning):
+    """A state beyond the particle-velocity range an equation of state was fitted to."""
+
+
+def extrapolations(pieces) -> list[str]:
+    """One line for each ``(material, v)`` whose volume ``v`` (m^3/kg) lies beyond the
+    principal-Hugoniot state at the top of the material's fitted data (``up_max``)."""
     found = []
-    for material, v in densest.values():
+    for material, v in pieces:
+        if getattr(material, "up_max", None) is None or not math.isfinite(v):
+            continue
         up = hugoniot_particle_velocity(material, v)
         if material.beyond_fit(up):
             found.append(f"{material.name}: compressed to the volume of the principal-"

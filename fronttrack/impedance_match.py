@@ -31,11 +31,16 @@ Speeds are Lagrangian (m/s, signed: positive to the right) unless named
 Eulerian; the Eulerian (laboratory) speed of a shock is
 ``u_ahead + U rho0 / rho_ahead`` (mass flux ``rho_a (D - u_a) = rho0 U``).
 Stresses are positive in compression.
+
+A state beyond the particle-velocity range of a material's fitted Hugoniot data
+(``up_max``) is computed on the extrapolated fit and warned about with a
+``FitExtrapolationWarning``, one per material and row.
 """
 
 from __future__ import annotations
 
 import math
+import warnings
 from dataclasses import asdict, dataclass
 
 from materials import (
@@ -48,6 +53,7 @@ from materials import (
     solve_contact,
 )
 
+from . import fits
 from .errors import SceneError, located
 from .material import material as named_material
 from .units import to_si
@@ -168,8 +174,15 @@ def impedance_match(flyer: Material, velocity: float, stack: list[Material],
         raise MatchError("layers: the stack needs at least one layer")
     impact = solve_contact(flyer, flyer.reference_state(u=float(velocity)),
                            stack[0], stack[0].reference_state(), release=release)
+    _warn_beyond_fits([(flyer, impact.left_star.v)])
     rows = [_row("flyer", flyer, impact.left_star, impact.left_waves, None, EXACT)]
     return rows + _through(impact.right_star, impact.right_waves, stack, release, mirrored)
+
+
+def _warn_beyond_fits(pieces) -> None:
+    """Warn (``FitExtrapolationWarning``) for each ``(material, v)`` beyond its fitted data."""
+    for line in fits.extrapolations(pieces):
+        warnings.warn(line, fits.FitExtrapolationWarning, stacklevel=3)
 
 
 def detonation_match(explosive: Material | str, stack: list[Material | str],
@@ -223,6 +236,7 @@ def _through(state: State, transmitted: tuple, stack: list[Material], release: s
         # Layer 0's state is exact either way; a row is approximate if its state or
         # its reflected wave came from the mirrored curve.
         method = MIRRORED if mirrored and (k > 0 or reflected is not None) else EXACT
+        _warn_beyond_fits([(material, state.v)])
         rows.append(_row(k, material, state, transmitted, reflected, method))
         state, transmitted = next_state, next_transmitted
     return rows

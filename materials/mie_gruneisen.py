@@ -129,8 +129,14 @@ class MieGruneisen(AffineEnergyMaterial):
         return self.isentrope(self.reference_state(), v)[1]
 
     def temperature(self, v: float, e: float) -> float | None:
+        """Temperature (K) from the reference isentrope's temperature
+        ``T_s(v) = T_room exp(Gamma0 (1 - v/v0))`` and a constant ``cv``:
+        ``T = T_s(v) + (e - e_s(v)) / cv``.  ``None`` without ``cv``, and where this
+        model gives no positive temperature (far beyond the fitted range, where the
+        extrapolated isentrope lies above the state's energy)."""
         if self.cv is None:
             return None
         eps = 1.0 - v / self.v0
         t_s0 = ROOM_TEMPERATURE * math.exp(self.gamma0 * eps)
-        return t_s0 + (e - self._reference_isentrope(v)) / self.cv
+        temperature = t_s0 + (e - self._reference_isentrope(v)) / self.cv
+        return temperature if temperature > 0.0 else None

@@ -104,6 +104,16 @@ def test_match_json(tmp_path, capsys):
     assert rows[0]["sigma"] == pytest.approx(rows[1]["sigma"], rel=1e-12)
 
 
+def test_match_beyond_the_fitted_data_warns_in_one_line_each(capsys):
+    assert main(["match", "Cu", "100 km/s", "Al2024"]) == 0
+    captured = capsys.readouterr()
+    warnings = [line for line in captured.err.splitlines() if "warning" in line]
+    assert len(warnings) == 2
+    assert all(line.startswith("wavediagram: warning: ") and "up_max" in line
+               for line in warnings)
+    assert "Traceback" not in captured.err
+
+
 def test_match_needs_units(capsys):
     assert main(["match", "Cu", "1000", "Al2024"]) == 2
     assert "missing units" in capsys.readouterr().err

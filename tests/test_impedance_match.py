@@ -9,16 +9,19 @@ from __future__ import annotations
 
 import json
 import math
+import warnings
 from itertools import pairwise
 
 import pytest
 
+from fronttrack.fits import FitExtrapolationWarning
 from fronttrack.impedance_match import (
     EXACT,
     MIRRORED,
     MatchRow,
     format_table,
     impedance_match,
+    match,
     to_json_dict,
 )
 from materials import LinearElastic, get
@@ -228,3 +231,25 @@ def test_an_explosive_flyer_or_layer_detonates_and_is_matched():
     rows = impedance_match(copper, 2000.0, [explosive, copper])
     assert rows[1].shock_speed == pytest.approx(detonation.speed, rel=1e-12)
     assert rows[1].reflected is not None and rows[2].sigma > rows[1].sigma
+
+
+def test_a_match_beyond_the_fitted_data_warns_and_reports_no_negative_temperature():
+    """Cu at 100 km/s on Al 2024: both states lie far beyond the Us-up data (up_max 3 and
+    4 km/s); each row warns with its principal-Hugoniot particle velocity, and where the
+    extrapolated temperature model gives no positive temperature the row says unknown."""
+    with pytest.warns(FitExtrapolationWarning) as caught:
+        rows = match("Cu", "100 km/s", ["Al2024"])
+    lines = [str(w.message) for w in caught]
+    assert len(lines) == 2
+    flyer, target = rows
+    assert f"up = {100e3 - flyer.u:.4g} m/s" in lines[0] and "Cu" in lines[0]
+    assert f"up = {target.u:.4g} m/s" in lines[1] and "Al2024" in lines[1]
+    assert all(row.temperature is None or row.temperature > 0.0 for row in rows)
+    assert target.temperature is None
+
+
+def test_a_match_within_the_fitted_data_does_not_warn():
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", FitExtrapolationWarning)
+        rows = match("Cu", "500 m/s", ["Al2024"])
+    assert all(row.temperature > 290.0 for row in rows)
