@@ -82,7 +82,8 @@ class Engine:
         self.planned_fractures: list[float] = []
         self.min_stress: tuple[float, float, float] | None = None
         self.t_end = scene.t_end
-        self.initial_states = [initial_state(layer) for layer in scene.layers]
+        self.initial_states = [initial_state(layer, f"layer[{k}]")
+                               for k, layer in enumerate(scene.layers)]
         self.resolution: Resolution = resolve(scene, self.initial_states)
         self.tables = IsentropeTables(self.resolution.negligible)
         self.signal_speed = signal_speed(scene, self.resolution.stress_scale)

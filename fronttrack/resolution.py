@@ -37,7 +37,14 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from materials import IdealGas, State, WavediagramError, solve_boundary, solve_contact
+from materials import (
+    IdealGas,
+    State,
+    StateOutOfRangeError,
+    WavediagramError,
+    solve_boundary,
+    solve_contact,
+)
 
 from .kinds import BoundaryKind, Release
 from .scene import Scene
@@ -146,11 +153,19 @@ class Resolution:
                 and abs(velocity_jump) <= self.negligible_velocity)
 
 
-def initial_state(layer) -> State:
-    """A layer's initial state: its stress reached along its wave curve, moving at ``velocity``."""
+def initial_state(layer, where: str = "layer") -> State:
+    """A layer's initial state: its stress reached along its wave curve, moving at ``velocity``.
+
+    A stress the material's equation of state cannot reach is a ``StateOutOfRangeError``
+    that names the field, ``where`` + ``.stress`` (e.g. ``layer[2].stress``).
+    """
     if layer.initial is not None:
         return layer.initial
-    return layer.material.initial_state(layer.stress, layer.velocity)
+    try:
+        return layer.material.initial_state(layer.stress, layer.velocity)
+    except StateOutOfRangeError as error:
+        raise StateOutOfRangeError(f"{where}.stress = {layer.stress / 1e9:.6g} GPa: "
+                                   f"{error}") from None
 
 
 def resolve(scene: Scene, states: list[State]) -> Resolution:

@@ -7,7 +7,8 @@ gas is swept up by a snowplow shock).
 
 import pytest
 
-from materials import IdealGas, get
+import fronttrack as ft
+from materials import IdealGas, StateOutOfRangeError, get
 from materials.riemann import solve_boundary
 from materials.state import State
 
@@ -116,3 +117,15 @@ def test_a_release_beyond_the_equation_of_state_stops_at_its_end_and_says_so(tmp
     json.dumps(solution.to_dict(probes=False), allow_nan=False)
     profile = solution.profile(0.16e-6)
     assert all(0.0 < s.sigma < 300e9 for s in profile.states)
+
+
+def test_an_initial_stress_beyond_the_equation_of_state_names_its_layer():
+    """A porous foam prestressed in tension beyond what its matrix carries (campaign seed
+    17): a one-line error naming the field and stating the range, raised before the solve."""
+    scene = ft.Scene(layers=(ft.Layer("Cu", "1 mm", velocity="100 m/s"),
+                             ft.Layer("PS_foam", "2 mm", stress="-0.327 GPa")), t_end="0.1 us")
+    with pytest.raises(StateOutOfRangeError) as caught:
+        ft.run(scene)
+    message = str(caught.value)
+    assert message.startswith("layer[1].stress = -0.327 GPa: ")
+    assert "outside the range" in message and "\n" not in message
