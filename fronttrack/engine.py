@@ -31,7 +31,7 @@ import time
 from characteristics.isentrope import IsentropeTables
 from materials import State, WavediagramError
 
-from . import coalesce, initiation, interactions, outgoing, spall, zones
+from . import coalesce, initiation, interactions, mismatch, outgoing, spall, zones
 from .counters import Counters
 from .fronts import UNKNOWN, Front, Region, inside_fan
 from .kinds import FrontKind, Release
@@ -89,6 +89,8 @@ class Engine:
         self.signal_speed = signal_speed(scene, self.resolution.stress_scale)
         self.head: Front | None = None
         self.coalesce_budget: tuple[float, float] | None = None  # fronttrack.coalesce
+        self.mismatches = mismatch.new_ledger()
+        self.keep_weak_waves = False  # set while a site's mismatch is solved again
 
     # --- ids and objects ------------------------------------------------------------
     def next_front_id(self) -> int:
@@ -187,6 +189,11 @@ class Engine:
             heapq.heappush(self._heap, (plan.t, FRACTURE, next(self._seq), "fracture", plan,
                                         None))
 
+    def push_mismatch(self, entry) -> None:
+        """Queue the deadline of a site's stress mismatch (``fronttrack.mismatch``)."""
+        heapq.heappush(self._heap, (entry.deadline, SITE, next(self._seq), "mismatch", entry,
+                                    None))
+
     def push_gap_closure(self, gap: Front) -> None:
         left, right = gap.prev.region_right.state.u, gap.region_right.state.u
         gap.gap_version += 1
@@ -219,6 +226,10 @@ class Engine:
                 if not front.alive or entry[5] != front.gap_version or id(front) in members:
                     continue
                 x_e = front.x0
+            elif kind == "mismatch":
+                if not mismatch.is_due(self, entry[4]) or id(entry[4].site) in members:
+                    continue
+                x_e = entry[4].site.position(t_e)
             else:
                 x_e = entry[4].x
             (x_l, s_l), (x_r, s_r) = left, right
@@ -278,7 +289,12 @@ class Engine:
             if kind == "fracture":
                 interactions.fracture(self, entry[4])
                 continue
-            if kind == "pair":
+            if kind == "mismatch":
+                if not mismatch.is_due(self, entry[4]):
+                    continue
+                front = entry[4].site
+                x, seed = front.position(t), [front]
+            elif kind == "pair":
                 a, b = entry[4], entry[5]
                 if not (a.alive and b.alive and a.next is b):
                     continue
@@ -302,7 +318,11 @@ class Engine:
                 self.stop_early(t, "time limit reached" if limit is None
                                 else f"time limit of {limit:g} s reached")
                 break
+            self.keep_weak_waves = kind == "mismatch"
+            if self.keep_weak_waves:
+                mismatch.count_resolved(self)
             self._process(seed, t, x, timer=kind == "site")
+            self.keep_weak_waves = False
             if self.progress is not None and counters.events % 1000 == 0:
                 self.progress(counters.events, t)
         self._finish()
@@ -377,6 +397,9 @@ class Engine:
                                           -1, site or new_site)
         right_specs = outgoing.wave_fronts(self, sol.right_waves, material_right, t, x,
                                            incoming, +1, site or new_site)
+        mismatch.note_event(self, site or new_site, group, t,
+                            sol.left_waves if left_specs is None else (),
+                            sol.right_waves if right_specs is None else ())
         left_star = sol.left_star if left_specs is not None else (
             region_left.state if region_left is not None else None)
         right_star = sol.right_star if right_specs is not None else (

@@ -65,7 +65,7 @@ def wave_fronts(engine, waves, material, t: float, x: float, incoming,
     """
     if not waves:
         return []
-    if negligible(engine, waves):
+    if not engine.keep_weak_waves and negligible(engine, waves):
         engine.counters.dropped_stress += sum(abs(w.behind.sigma - w.ahead.sigma)
                                               for w in waves)
         engine.counters.dropped_waves += 1

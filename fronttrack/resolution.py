@@ -188,10 +188,14 @@ def resolve(scene: Scene, states: list[State]) -> Resolution:
     negligible = _negligible(scene, scale, step, makes_fans)
     velocity_ratio = max(velocity_jump, scale / _softest_solid(scene, states, impedance)
                          ) / scale  # (m/s) per Pa
+    # a dropped wave may carry no more velocity than a negligible one in the stiffest
+    # layer (the velocity tolerance's own impedance), or than the scene's velocity jumps
+    # scaled: in a soft layer a wave of negligible stress is a large velocity jump
+    negligible_ratio = max(velocity_jump / scale, 1.0 / impedance)
     length = scene.length
     return Resolution(stress_scale=scale, step=step, step_rule=rule,
                       velocity_step=step * velocity_ratio,
-                      negligible_velocity=negligible * velocity_ratio,
+                      negligible_velocity=negligible * negligible_ratio,
                       stress_tolerance=stress_tol, velocity_tolerance=velocity_tol,
                       negligible=negligible, length=length, x_tol=1e-10 * length,
                       release=release, makes_fans=makes_fans, record_constant=constant,
@@ -276,6 +280,13 @@ def _values_until(boundary, t_end: float) -> list[float]:
         boundary.value_at(t_end)]
 
 
+def _separates(boundary, solution) -> bool:
+    """Whether an unbonded piston (a velocity boundary) would pull on its face: it comes
+    away from it and launches no wave (``fronttrack.interactions``)."""
+    return (boundary.kind == BoundaryKind.VELOCITY and boundary.bond != "bonded"
+            and solution.bonded_sigma < 0.0)
+
+
 def stress_scale(scene: Scene, states: list[State]) -> float:
     """Largest stress the initial Riemann problems produce (Pa): scales steps and thresholds."""
     return initial_scales(scene, states)[0]
@@ -304,6 +315,8 @@ def initial_scales(scene: Scene, states: list[State]) -> tuple[float, float]:
                 sol = solve_boundary(material, state, side, release=release,
                                      **{"stress" if by_stress else "velocity": value})
             except WavediagramError:  # beyond the equation of state: the engine says how
+                continue
+            if _separates(spec, sol):
                 continue
             scale = max(scale, abs(sol.bonded_sigma))
             star = sol.left_star if side == "right" else sol.right_star

@@ -251,7 +251,7 @@ class Solution:
                                for z in engine.fracture_zones],
             "suppressed_spalls": counters.suppressed_spalls,
             "largest_suppressed_tension": counters.suppressed_tension,
-        }
+        } | engine.mismatches.report()
         return cls(scene=engine.scene, engine_fronts=engine.fronts,
                    engine_regions=engine.regions, patches=engine.patches,
                    events=engine.events, spalls=engine.spalls, stats=stats,
