@@ -296,22 +296,22 @@ class Solution:
     def _segments(self) -> dict:
         """Front segments as arrays: one per front and per region on its right."""
         if "segments" not in self._cache:
-            cols = {name: [] for name in ("x0", "t0", "t1", "speed", "right", "ray",
-                                          "family", "invariant", "lineage")}
+            names = ("x0", "t0", "t1", "speed", "right", "ray", "family", "invariant",
+                     "lineage")
+            rows = []
             for f in self.engine_fronts:
                 if f.t1 is None or f.t1 < f.t0:
                     continue
                 start = f.t0
                 is_ray = f.kind == FrontKind.RAY
                 for end, region in [*f.earlier_regions, (f.t1, f.right_region_id)]:
-                    for name, value in (("x0", f.position(start)), ("t0", start),
-                                        ("t1", end), ("speed", f.speed),
-                                        ("right", -1 if region is None else region),
-                                        ("ray", is_ray), ("family", f.direction),
-                                        ("invariant", f.invariant), ("lineage", f.lineage)):
-                        cols[name].append(value)
+                    rows.append((f.position(start), start, end, f.speed,
+                                 -1 if region is None else region, is_ray, f.direction,
+                                 f.invariant, f.lineage))
                     start = end
-            arrays = {name: np.array(values) for name, values in cols.items()}
+            columns = zip(*rows, strict=True) if rows else ([] for _ in names)
+            arrays = {name: np.array(values)
+                      for name, values in zip(names, columns, strict=True)}
             for patch in self.patches:
                 extra = {"x0": patch.seg_x0, "t0": patch.seg_t0, "t1": patch.seg_t1,
                          "speed": patch.seg_speed, "right": patch.seg_right,
