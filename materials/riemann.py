@@ -13,7 +13,10 @@ found by a bracketed, safeguarded Newton iteration inside both materials'
 ranges of validity.  The same solver serves impact, collision, overtaking
 (the overtaken and overtaking waves are replaced by the states they bound),
 transmission and reflection at interfaces, and reflection at boundaries
-(``solve_boundary``: one wave curve against a prescribed stress or velocity).
+(``solve_boundary``: one wave curve against a prescribed stress or velocity).  Two
+states of one small-strain elastic–plastic solid that both stay elastic are solved in
+closed form first, by superposition (``materials.elastic_contact``): the same answer,
+without wave curves.
 
 Contacts that cannot carry tension: if the root lies below ``-tensile_strength``
 (0 for an unbonded interface or a gas, the spall strength inside a solid), the
