@@ -3,10 +3,12 @@
     python benchmarks/run_length.py            # writes benchmarks/RUN_LENGTH.md
     python benchmarks/run_length.py --quick    # fewer lengths, for a smoke test
     python benchmarks/run_length.py --stacks   # only (d), appended to RUN_LENGTH.md
+    python benchmarks/run_length.py --case b   # only (b), printed (nothing written)
 
 For scenes whose wave content does not grow, events and solve time should grow
 linearly with the simulated time ``T``; the fitted exponent ``d ln(events)/d ln(T)``
-(least squares over the lengths that finished) says how far each scene is from that.
+(least squares over the lengths that finished) says how far each scene is from that;
+CPU seconds (the process's) beside the wall clock tell a slow run from a loaded machine.
 Scenes: (a) a symmetric Al 2024 impact (2 mm onto 4 mm at 500 m/s, library spall
 strength) at 16 characteristics per fan and at default accuracy, run to 2, 4, 8 and 16
 times the transit time of the stack at c0; (b) Davison's steel (5 mm onto 10 mm at 230 m/s, small
@@ -17,13 +19,16 @@ anvils (piston at 100 m/s on the left, wall on the right), a ring-up; (d) random
 stacks of solids with strength (``tests/random_scenes.py::strength_stack_scene``,
 fixed seeds): how many finish within the cap.  Each run is capped at ``--max-seconds``
 (wall clock); a run stopped by the cap or by the event limit is listed and left out of
-the fit.  Times are wall-clock seconds on this machine (stated in the output).
+the fit.  Under each table, the events per µs of simulated time between successive
+lengths: constant once a scene's wave content stops growing.  Times are wall-clock
+seconds on this machine (stated in the output).
 """
 
 from __future__ import annotations
 
 import argparse
 import dataclasses
+import itertools
 import math
 import os
 import platform
@@ -68,17 +73,19 @@ def measure(build, lengths, accuracy, max_seconds: float) -> list[dict]:
     rows = []
     for t_end in lengths:
         acc = ft.Accuracy(**{**accuracy, "max_seconds": max_seconds})
-        start = time.perf_counter()
+        start, cpu = time.perf_counter(), time.process_time()
         try:
             solution = ft.run(build(t_end, acc))
         except ft.WavediagramError as error:
             rows.append({"t_end": t_end, "outcome": type(error).__name__,
-                         "seconds": time.perf_counter() - start})
+                         "seconds": time.perf_counter() - start,
+                         "cpu": time.process_time() - cpu})
             continue
-        seconds = time.perf_counter() - start
+        seconds, cpu = time.perf_counter() - start, time.process_time() - cpu
         stopped = solution.stats.get("stopped")
         balance = solution.accuracy_report["balance"]
         rows.append({"t_end": t_end, "events": solution.stats["events"], "seconds": seconds,
+                     "cpu": cpu,
                      "outcome": "time cap" if stopped else "finished",
                      "energy": balance["energy_error"], "momentum": balance["momentum_error"]})
     return rows
@@ -96,19 +103,29 @@ def exponent(rows: list[dict], key: str, fit_from: float = 0.0) -> float:
 
 def table(title: str, rows: list[dict], fit_from: float = 0.0) -> list[str]:
     lines = [f"### {title}", "",
-             "| t_end (µs) | outcome | events | seconds | energy balance | momentum balance |",
-             "|---:|---|---:|---:|---:|---:|"]
+             "| t_end (µs) | outcome | events | seconds | CPU seconds | energy balance "
+             "| momentum balance |",
+             "|---:|---|---:|---:|---:|---:|---:|"]
     for r in rows:
         events = r.get("events", "")
         energy = f"{r['energy']:+.1e}" if r.get("energy") is not None else ""
         momentum = f"{r['momentum']:.1e}" if r.get("momentum") is not None else ""
         lines.append(f"| {r['t_end'] * 1e6:.3g} | {r['outcome']} | {events} | "
-                     f"{r['seconds']:.2f} | {energy} | {momentum} |")
+                     f"{r['seconds']:.2f} | {r['cpu']:.2f} | {energy} | {momentum} |")
     since = f" from {fit_from * 1e6:.3g} µs" if fit_from > 0.0 else ""
     lines += ["", f"Fitted exponent over the finished runs{since}: "
               f"events ~ T^{exponent(rows, 'events', fit_from):.2f}, "
-              f"time ~ T^{exponent(rows, 'seconds', fit_from):.2f}.", ""]
+              f"time ~ T^{exponent(rows, 'seconds', fit_from):.2f}.", "", rates(rows), ""]
     return lines
+
+
+def rates(rows: list[dict]) -> str:
+    """Events per µs of simulated time between successive finished lengths."""
+    done = [r for r in rows if r["outcome"] == "finished"]
+    parts = [f"{a['t_end'] * 1e6:.3g}-{b['t_end'] * 1e6:.3g}: "
+             f"{(b['events'] - a['events']) / ((b['t_end'] - a['t_end']) * 1e6):.0f}"
+             for a, b in itertools.pairwise(done)]
+    return "Events per µs between successive lengths: " + ("; ".join(parts) or "–") + "."
 
 
 def strength_stacks(seeds: range, max_seconds: float) -> list[str]:
@@ -138,6 +155,8 @@ def main() -> None:
     parser.add_argument("--quick", action="store_true")
     parser.add_argument("--max-seconds", type=float, default=120.0)
     parser.add_argument("--stacks", action="store_true")
+    parser.add_argument("--case", choices=("a", "a'", "b", "c"),
+                        help="run only this section and print it")
     args = parser.parse_args()
     if args.stacks:
         stacks = strength_stacks(range(30), 10.0)
@@ -153,8 +172,8 @@ def main() -> None:
         ("(a') the same at default accuracy", symmetric_al,
          [f * transit for f in factors], {}, 0.0),
         ("(b) Davison steel, 5 mm onto 10 mm at 230 m/s, default accuracy", steel,
-         [t * 1e-6 for t in ((2, 3, 4) if args.quick else (2, 3, 4, 5, 6, 10, 20))], {},
-         6e-6),
+         [t * 1e-6 for t in ((2, 3, 4) if args.quick else (2, 3, 4, 5, 6, 8, 10, 12, 16, 20))],
+         {}, 6e-6),
         ("(c) 10 µm PMMA between W anvils, piston 100 m/s, default accuracy", ring_up,
          [t * 1e-6 for t in ((0.25, 0.5) if args.quick else (0.25, 0.5, 1.0, 1.5))], {},
          0.0),
@@ -163,6 +182,12 @@ def main() -> None:
              f"`python benchmarks/run_length.py`; {platform.machine()}, {os.cpu_count()} cores, "
              f"Python {platform.python_version()}, {time.strftime('%Y-%m-%d')}; "
              f"each run capped at {args.max_seconds:g} s of wall clock.", ""]
+    if args.case is not None:
+        title, build, lengths, accuracy, fit_from = next(
+            case for case in cases if case[0].startswith(f"({args.case})"))
+        rows = measure(build, lengths, accuracy, args.max_seconds)
+        print("\n".join(lines + table(title, rows, fit_from)), flush=True)
+        return
     for title, build, lengths, accuracy, fit_from in cases:
         rows = measure(build, lengths, accuracy, args.max_seconds)
         lines += table(title, rows, fit_from)

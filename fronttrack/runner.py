@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import time
 
-from . import balance, fits, viscoplastic_scene
+from . import balance, collector, fits, viscoplastic_scene
 from .damage import run_with_damage
 from .engine import Engine
 from .error_estimate import estimate_error
@@ -32,8 +32,15 @@ def run(scene: Scene, progress=None) -> Solution:
     With ``accuracy.max_seconds`` the solution may end before ``t_end``; its
     ``stats["stopped"]`` then says when and why.  A scene with a viscoplastic layer is
     solved on its characteristic grid instead (``fronttrack.viscoplastic_scene``): a
-    ``GridSolution`` with the same probe records.
+    ``GridSolution`` with the same probe records.  Python's cyclic garbage collector is
+    paused meanwhile (``fronttrack.collector``).
     """
+    with collector.paused():
+        return _run(scene, progress)
+
+
+def _run(scene: Scene, progress=None) -> Solution:
+    """``run`` itself, with the collector as it is."""
     if not isinstance(scene, Scene):
         raise SceneError(f"scene: expected a Scene (ft.load_scene reads a scene file), "
                          f"got {scene!r:.60}")

@@ -296,22 +296,27 @@ class Solution:
     def _segments(self) -> dict:
         """Front segments as arrays: one per front and per region on its right."""
         if "segments" not in self._cache:
-            cols = {name: [] for name in ("x0", "t0", "t1", "speed", "right", "ray",
-                                          "family", "invariant", "lineage")}
+            names = ("x0", "t0", "t1", "speed", "right", "ray", "family", "invariant",
+                     "lineage")
+            rows = []
             for f in self.engine_fronts:
                 if f.t1 is None or f.t1 < f.t0:
                     continue
-                start = f.t0
                 is_ray = f.kind == FrontKind.RAY
+                if not f.earlier_regions:  # one segment (most fronts)
+                    region = f.right_region_id
+                    rows.append((f.x0, f.t0, f.t1, f.speed, -1 if region is None else region,
+                                 is_ray, f.direction, f.invariant, f.lineage))
+                    continue
+                start = f.t0
                 for end, region in [*f.earlier_regions, (f.t1, f.right_region_id)]:
-                    for name, value in (("x0", f.position(start)), ("t0", start),
-                                        ("t1", end), ("speed", f.speed),
-                                        ("right", -1 if region is None else region),
-                                        ("ray", is_ray), ("family", f.direction),
-                                        ("invariant", f.invariant), ("lineage", f.lineage)):
-                        cols[name].append(value)
+                    rows.append((f.position(start), start, end, f.speed,
+                                 -1 if region is None else region, is_ray, f.direction,
+                                 f.invariant, f.lineage))
                     start = end
-            arrays = {name: np.array(values) for name, values in cols.items()}
+            # one conversion of the whole table (ids, flags and families are exact floats)
+            table = np.array(rows, dtype=float).reshape(-1, len(names))
+            arrays = {name: np.ascontiguousarray(table[:, k]) for k, name in enumerate(names)}
             for patch in self.patches:
                 extra = {"x0": patch.seg_x0, "t0": patch.seg_t0, "t1": patch.seg_t1,
                          "speed": patch.seg_speed, "right": patch.seg_right,
@@ -322,6 +327,7 @@ class Solution:
                     arrays[name] = np.concatenate([arrays[name], extra[name]])
             arrays["right"] = arrays["right"].astype(int)
             arrays["ray"] = arrays["ray"].astype(bool)
+            arrays["family"] = arrays["family"].astype(int)
             arrays["lineage"] = arrays["lineage"].astype(int)
             self._cache["segments"] = arrays
         return self._cache["segments"]
@@ -384,14 +390,55 @@ class Solution:
         arriving = (t1 - t) < (t - t0)
         return np.lexsort((t0, np.where(arriving, -speed, speed), pos[index]))
 
+    def _time_buckets(self) -> tuple[np.ndarray, np.ndarray, float]:
+        """The front segments by time slice: ``(index, start, width)``, where the segments
+        overlapping slice ``k`` (``[k width, (k+1) width)``, s) are
+        ``index[start[k]:start[k+1]]``, in increasing order.  About 64 segments per slice,
+        so finding the segments live at one instant costs the few slices' segments, not
+        all of them (records at a station look up one instant per crossing: without the
+        slices that was quadratic in the length of the run)."""
+        if "buckets" not in self._cache:
+            a = self._segments()
+            n, t_end = len(a["t0"]), self.scene.t_end
+            slices = max(1, min(n // 64, 1 << 16))
+            width = t_end / slices
+            if not (np.all(np.isfinite(a["t0"])) and np.all(np.isfinite(a["t1"]))):
+                slices, width = 1, math.inf  # one slice holding every segment
+            first = np.clip(np.floor(a["t0"] / width), 0, slices - 1).astype(np.int64)
+            last = np.clip(np.floor(np.minimum(a["t1"], t_end) / width), 0,
+                           slices - 1).astype(np.int64)
+            counts = np.maximum(last - first + 1, 0)
+            starts = np.cumsum(counts) - counts
+            offsets = np.arange(counts.sum()) - np.repeat(starts, counts)
+            bucket = np.repeat(first, counts) + offsets
+            order = np.argsort(bucket, kind="stable")
+            index = np.repeat(np.arange(n), counts)[order]
+            start = np.searchsorted(bucket[order], np.arange(slices + 1))
+            self._cache["buckets"] = (index, start, width)
+        return self._cache["buckets"]
+
+    def _live_at(self, t: float) -> tuple[np.ndarray, np.ndarray]:
+        """The segments live at time ``t`` (s), in increasing order, and their positions
+        (m) then: ``pos`` is indexed like the segments, set only at the live ones."""
+        a = self._segments()
+        index, start, width = self._time_buckets()
+        k = min(max(int(t / width), 0), len(start) - 2) if math.isfinite(width) else 0
+        near = index[start[k]:start[k + 1]]
+        t0, t1 = a["t0"][near], a["t1"][near]
+        live = near[(t0 <= t) & ((t1 > t) | (t1 >= self.scene.t_end))]
+        pos = np.empty(len(a["t0"]))
+        speed, x0 = a["speed"][live], a["x0"][live]
+        pos[live] = np.where(speed == 0.0, x0, x0 + speed * (t - a["t0"][live]))
+        return live, pos
+
     def _region_id_at(self, x: float, t: float) -> int:
         a = self._segments()
         t = min(max(t, 0.0), self.scene.t_end)
-        live = (a["t0"] <= t) & ((a["t1"] > t) | (a["t1"] >= self.scene.t_end))
-        pos = np.where(a["speed"] == 0.0, a["x0"], a["x0"] + a["speed"] * (t - a["t0"]))
-        candidates = np.nonzero(live & (pos <= x) & (a["right"] >= 0))[0]
+        live, pos = self._live_at(t)
+        right = a["right"][live] >= 0
+        candidates = live[(pos[live] <= x) & right]
         if candidates.size == 0:
-            candidates = np.nonzero(live & (a["right"] >= 0))[0]
+            candidates = live[right]
             best = candidates[np.argmin(pos[candidates])]
         else:
             best = candidates[self._spatial_order(candidates, pos, t)[-1]]
@@ -544,9 +591,7 @@ class Solution:
         """``(x_left, x_right, region_id)`` intervals of the cells at time ``t`` (s)."""
         a = self._segments()
         t = min(max(t, 0.0), self.scene.t_end)
-        live = (a["t0"] <= t) & ((a["t1"] > t) | (a["t1"] >= self.scene.t_end))
-        pos = np.where(a["speed"] == 0.0, a["x0"], a["x0"] + a["speed"] * (t - a["t0"]))
-        index = np.nonzero(live)[0]
+        index, pos = self._live_at(t)
         order = index[self._spatial_order(index, pos, t)]
         intervals = []
         for i, j in zip(order[:-1], order[1:], strict=True):
@@ -567,13 +612,12 @@ class Solution:
         a = self._segments()
         cells = self._cell_ids_at(t)
         length = self.scene.length
-        pos = np.where(a["speed"] == 0.0, a["x0"], a["x0"] + a["speed"] * (t - a["t0"]))
-        live = (a["t0"] <= t) & ((a["t1"] > t) | (a["t1"] >= self.scene.t_end))
+        live, pos = self._live_at(t)
         region_ids = [rid for _, _, rid in cells]
         coords = [x_lo for x_lo, _, _ in cells[1:]]
         groups = []
         for c in coords:
-            near = np.nonzero(live & (np.abs(pos - c) <= 1e-12 * length))[0]
+            near = live[np.abs(pos[live] - c) <= 1e-12 * length]
             groups.append([Crossing(bool(a["ray"][i]) and not math.isnan(a["invariant"][i]),
                                     int(a["family"][i]), float(a["invariant"][i]))
                            for i in near] or [Crossing(False)])

@@ -429,16 +429,8 @@ class ElasticPlasticWaveCurve(StressRange):
         return middle, behind
 
     def _jump(self, a: State, sigma: float, plastic: bool) -> State:
-        """The state a shock of one branch reaches from ``a`` (increments keep the jumps exact)."""
-        mat, d = self.material, self.direction
-        modulus = mat.bulk_modulus if plastic else mat.longitudinal_modulus
-        impedance = mat.bulk_impedance if plastic else mat.impedance
-        ds = sigma - a.sigma
-        deps = ds / modulus
-        dv = deps / mat.rho0  # v_a - v_b
-        ep = a.plastic_strain + 2.0 * deps / 3.0 if plastic else a.plastic_strain
-        return State(sigma=float(sigma), u=a.u + d * ds / impedance, v=a.v - dv,
-                     e=a.e + 0.5 * (a.sigma + sigma) * dv, plastic_strain=ep)
+        """The state a shock of one branch reaches from ``a`` (``branch_jump``)."""
+        return branch_jump(self.material, a, sigma, self.direction, plastic)
 
     def state_at(self, sigma: float) -> State:
         """The state behind the wave that reaches stress ``sigma``."""
@@ -495,6 +487,26 @@ class ElasticPlasticWaveCurve(StressRange):
         if math.isnan(knee):
             return mat.impedance * (v - a.v)
         return mat.impedance * (v_knee - a.v) + mat.bulk_impedance * (v - v_knee)
+
+
+def branch_jump(material: ElasticPlastic, a: State, sigma: float, direction: int,
+                plastic: bool) -> State:
+    """The state a shock on one straight branch reaches from ``a`` at stress ``sigma`` (Pa).
+
+    On the elastic branch ``d sigma = (lambda + 2 mu) d eps`` at speed ``C0``, on the
+    plastic one ``d sigma = K d eps`` at ``CB`` with ``d eps_p = (2/3) d eps``; the jump
+    conditions give ``u_b = u_a + d (sigma - sigma_a)/(rho0 C)`` for a wave running in
+    ``direction`` ``d`` and ``e_b = e_a + (sigma_a + sigma)(v_a - v_b)/2``.  Written as
+    increments from ``a``, so the jumps are exact to rounding.
+    """
+    modulus = material.bulk_modulus if plastic else material.longitudinal_modulus
+    impedance = material.bulk_impedance if plastic else material.impedance
+    ds = sigma - a.sigma
+    deps = ds / modulus
+    dv = deps / material.rho0  # v_a - v_b
+    ep = a.plastic_strain + 2.0 * deps / 3.0 if plastic else a.plastic_strain
+    return State(sigma=float(sigma), u=a.u + direction * ds / impedance, v=a.v - dv,
+                 e=a.e + 0.5 * (a.sigma + sigma) * dv, plastic_strain=ep)
 
 
 def _yield_strength(name: str, value: float) -> float:

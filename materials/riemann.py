@@ -13,7 +13,10 @@ found by a bracketed, safeguarded Newton iteration inside both materials'
 ranges of validity.  The same solver serves impact, collision, overtaking
 (the overtaken and overtaking waves are replaced by the states they bound),
 transmission and reflection at interfaces, and reflection at boundaries
-(``solve_boundary``: one wave curve against a prescribed stress or velocity).
+(``solve_boundary``: one wave curve against a prescribed stress or velocity).  Two
+states of one small-strain elastic–plastic solid that both stay elastic are solved in
+closed form first, by superposition (``materials.elastic_contact``): the same answer,
+without wave curves.
 
 Contacts that cannot carry tension: if the root lies below ``-tensile_strength``
 (0 for an unbonded interface or a gas, the spall strength inside a solid), the
@@ -29,6 +32,8 @@ import dataclasses
 import math
 from dataclasses import dataclass
 
+from .elastic_contact import elastic_contact
+from .elastic_plastic import ElasticPlastic
 from .errors import NoSolutionError, StateOutOfRangeError
 from .roots import EPS as _EPS
 from .roots import bracket_near, bracketed_newton
@@ -84,6 +89,14 @@ def solve_contact(left_material, left: State, right_material, right: State,
     ``inf`` for a bonded interface that never fails, 0 for an unbonded one,
     the spall strength inside a material.
     """
+    # Tension *reaching* the strength separates: equality is decided within the
+    # rounding of a computed stress (1e-12 relative), never by the last bits.
+    floor = -tensile_strength * (1.0 - STRENGTH_TOLERANCE)
+    if left_material is right_material and isinstance(left_material, ElasticPlastic):
+        elastic = elastic_contact(left_material, left, right, floor)
+        if elastic is not None:  # both sides stay elastic: the superposition
+            *waves_and_stars, sigma = elastic
+            return RiemannSolution(*waves_and_stars, bonded_sigma=sigma)
     curve_l = left_material.wave_curve(left, LEFT, release)
     curve_r = right_material.wave_curve(right, RIGHT, release)
     if not math.isfinite(left.v) or not math.isfinite(right.v):
@@ -99,9 +112,6 @@ def solve_contact(left_material, left: State, right_material, right: State,
         return g_l + g_r + du, dg_l + dg_r
 
     guess = _acoustic_guess(curve_l.impedance, curve_r.impedance, left, right)
-    # Tension *reaching* the strength separates: equality is decided within the
-    # rounding of a computed stress (1e-12 relative), never by the last bits.
-    floor = -tensile_strength * (1.0 - STRENGTH_TOLERANCE)
     if hasattr(curve_l, "linear_breaks") and hasattr(curve_r, "linear_breaks"):
         sigma = _piecewise_linear_root(phi, curve_l, curve_r, guess)
         if sigma is not None and sigma >= floor:
