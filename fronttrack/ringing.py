@@ -1,7 +1,7 @@
 """Ringing layers ended at their limit: the rest of a geometric series summed at once.
 
-A layer bounded by two sites (interfaces or contacts with *anvils* beyond them, or a
-free face, a gap or a wall) rings: a wave in it reflects at each face with a stress
+A layer bounded by two sites (interfaces with *anvils* beyond them, or a free face, a
+gap or a wall) rings: a wave in it reflects at each face with a stress
 reflection coefficient ``R = (Z - z) / (Z + z)`` (``z`` the layer's acoustic impedance
 ``rho0 C_L``, ``Z`` the anvil's; ``R = -1`` at a free face or a gap, ``+1`` at a wall)
 and sends the rest ``T = 1 + R`` into the anvil.  Echo ``n`` is ``a r^n`` with
@@ -69,7 +69,11 @@ ENERGY_ROUNDING = 1e-12
 """The energy-keeping volume is found when the stress there is within this fraction of
 the stress scale of the limit stress."""
 
-_ANVIL_SITES = (FrontKind.INTERFACE, FrontKind.CONTACT)
+ANVIL_SITE = FrontKind.INTERFACE
+"""The faces a layer rings between are interfaces between layers (or a free face, a gap
+or a wall).  An entropy contact inside one material reflects next to nothing (``R``
+near 0): a strip between two is not a ringing layer, and contacts may be coalesced
+(``fronttrack.coalesce``) while the layer's faces must persist."""
 
 
 @dataclasses.dataclass
@@ -174,7 +178,7 @@ def _layer(engine, group):
 def _face(engine, site, side: str) -> _Face | None:
     """The face of a layer at ``site`` on its ``side`` (``"left"``: the layer lies to the
     right of the site), or ``None`` if the site is not one a ringing layer ends at."""
-    if site.kind in _ANVIL_SITES:
+    if site.kind == ANVIL_SITE:
         far = site.prev.region_right if side == "left" else site.region_right
         return _Face(site, far, "anvil") if far is not None else None
     if site.kind == FrontKind.GAP:
