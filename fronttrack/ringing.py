@@ -153,10 +153,13 @@ def _layer(engine, group):
         return None
     site = sites[0]
     if site is group[-1]:
-        step = "prev"
+        step, side, other_side = "prev", "right", "left"
     elif site is group[0]:
-        step = "next"
+        step, side, other_side = "next", "left", "right"
     else:
+        return None
+    face = _face(engine, site, side)
+    if face is None:
         return None
     waves, front = [], getattr(site, step)
     while front is not None and not front.is_site:
@@ -164,15 +167,13 @@ def _layer(engine, group):
         if len(waves) > MAX_WAVES:
             return None
         front = getattr(front, step)
-    if front is None or not waves:
-        return None
-    ends = (front, site) if step == "prev" else (site, front)
-    faces = [_face(engine, ends[0], "left"), _face(engine, ends[1], "right")]
-    if None in faces or all(f.condition != "anvil" for f in faces):
+    other = _face(engine, front, other_side) if front is not None else None
+    if other is None or "anvil" not in (face.condition, other.condition):
         return None
     if step == "prev":
         waves.reverse()
-    return faces[0], faces[1], waves
+        return other, face, waves
+    return face, other, waves
 
 
 def _face(engine, site, side: str) -> _Face | None:
