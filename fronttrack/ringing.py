@@ -113,36 +113,47 @@ def try_end(engine, group, t: float) -> bool:
     sol, star = limit
     if any(abs(s.sigma - star.sigma) > tol or abs(s.u - star.u) > u_tol for s in states):
         return False
-    xa, xb = left.site.x0, right.site.x0
-    rho0 = material.rho0
     widths = [max(q.position(t) - p.position(t), 0.0) for p, q in itertools.pairwise(bounds)]
     rep = regions[widths.index(max(widths))]
-    z = rho0 * material.sound_speed(rep.state.v, rep.state.e)
-    r = _reflection(engine, left, z, -1) * _reflection(engine, right, z, +1)
-    if not abs(r) < 1.0:
+    r = _converging(engine, left, right, regions, rep, tol)
+    if r is None:
         return False
-    a = max(abs(w.jump) for w in waves)
-    tau = (xb - xa) * rho0 / z
-    fastest = max([f.far.material.sound_speed(f.far.state.v, f.far.state.e)
-                   for f in (left, right) if f.far] + [z / rho0])
-    if 2.0 * a / (1.0 - abs(r)) > tol or (
-            4.0 * a * tau * fastest / (1.0 - abs(r)) ** 2
-            > coalesce.VISIBILITY * tol * res.coalesce_length):
+    kept = _energy_keeping(engine, material, rep.state, star, regions, widths)
+    if kept is None:
         return False
-    layer_state = _energy_keeping(engine, material, rep.state, star, regions, widths)
-    if layer_state is None:
-        return False
+    layer_state, offset = kept
     _replace(engine, left, right, waves, regions, sol, layer_state, t)
-    momentum = rho0 * ((xb - xa) * star.u - sum(w * region.state.u
-                                                for w, region in zip(widths, regions, strict=True)))
+    xa, xb = left.site.x0, right.site.x0
+    momentum = material.rho0 * ((xb - xa) * star.u - sum(
+        w * region.state.u for w, region in zip(widths, regions, strict=True)))
     engine.counters.ringing.append({
         "layer": regions[0].layer, "t": t, "x_lo": xa, "x_hi": xb, "reflection": r,
         "remaining_stress": max(abs(s.sigma - star.sigma) for s in states),
         "remaining_velocity": max(abs(s.u - star.u) for s in states),
-        "sigma": star.sigma, "u": star.u, "momentum": momentum,
-        "energy_offset": layer_state.e - _on_curve(engine, material, rep.state, star).e,
+        "sigma": star.sigma, "u": star.u, "momentum": momentum, "energy_offset": offset,
     })
     return True
+
+
+def _converging(engine, left, right, regions, rep, tol: float) -> float | None:
+    """The layer's round-trip reflection ``r = R_left R_right`` if its series converges
+    and its rest is below the records' resolution (module docstring), else ``None``."""
+    res = engine.resolution
+    material = rep.material
+    z = material.rho0 * material.sound_speed(rep.state.v, rep.state.e)
+    r = _reflection(engine, left, z, -1) * _reflection(engine, right, z, +1)
+    if not abs(r) < 1.0:
+        return None
+    # the next echo: the largest stress jump of the layer's waves
+    a = max(abs(q.state.sigma - p.state.sigma) for p, q in itertools.pairwise(regions))
+    tau = (right.site.x0 - left.site.x0) * material.rho0 / z
+    fastest = max([f.far.material.sound_speed(f.far.state.v, f.far.state.e)
+                   for f in (left, right) if f.far] + [z / material.rho0])
+    if 2.0 * a / (1.0 - abs(r)) > tol or (
+            4.0 * a * tau * fastest / (1.0 - abs(r)) ** 2
+            > coalesce.VISIBILITY * tol * res.coalesce_length):
+        return None
+    return r
 
 
 def _layer(engine, group):
@@ -247,10 +258,11 @@ def _on_curve(engine, material, state, star):
 
 
 def _energy_keeping(engine, material, rep, star, regions, widths):
-    """The layer's limit state: stress and velocity of ``star``, internal energy keeping
-    the layer's total energy, volume where the equation of state gives that stress at
-    that energy (the wave curve's volume where the stress does not depend on the
-    energy).  ``None`` if no such volume is found."""
+    """The layer's limit state and its energy offset (J/kg): stress and velocity of
+    ``star``, internal energy keeping the layer's total energy, volume where the
+    equation of state gives that stress at that energy (the wave curve's volume where
+    the stress does not depend on the energy); the offset is that internal energy less
+    the wave curve's at the limit stress.  ``None`` if no such volume is found."""
     try:
         on_curve = _on_curve(engine, material, rep, star)
     except (WavediagramError, ValueError):
@@ -263,11 +275,11 @@ def _energy_keeping(engine, material, rep, star, regions, widths):
     e = total - 0.5 * star.u ** 2
     scale = max(abs(star.sigma), engine.resolution.stress_scale)
     if hasattr(material, "stress_at"):  # elastic-plastic: stress does not depend on e
-        return dataclasses.replace(on_curve, e=e)
+        return dataclasses.replace(on_curve, e=e), e - on_curve.e
     v = _volume_at(material, star.sigma, e, on_curve.v, ENERGY_ROUNDING * scale)
     if v is None:
         return None
-    return dataclasses.replace(on_curve, v=v, e=e)
+    return dataclasses.replace(on_curve, v=v, e=e), e - on_curve.e
 
 
 def _volume_at(material, sigma: float, e: float, guess: float, tolerance: float):
