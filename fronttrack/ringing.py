@@ -159,15 +159,16 @@ def _converging(engine, left, right, regions, rep, tol: float) -> float | None:
 def _layer(engine, group):
     """``(left face, right face, waves)`` of the layer whose waves reach a face in
     ``group`` (every other front of ``group`` one of those waves), or ``None``."""
-    sites = [f for f in group if f.is_site]
-    if len(sites) != 1 or len(group) < 2:
+    if len(group) < 2:
         return None
-    site = sites[0]
-    if site is group[-1]:
-        step, side, other_side = "prev", "right", "left"
-    elif site is group[0]:
-        step, side, other_side = "next", "left", "right"
+    first, last = group[0].is_site, group[-1].is_site
+    if last and not first:
+        site, step, side, other_side = group[-1], "prev", "right", "left"
+    elif first and not last:
+        site, step, side, other_side = group[0], "next", "left", "right"
     else:
+        return None
+    if any(f.is_site for f in group[1:-1]):
         return None
     face = _face(engine, site, side)
     if face is None:
