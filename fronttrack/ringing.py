@@ -36,8 +36,10 @@ receives one wave (the solver's, which carries the exact sum of the series for l
 elastic solids and the contact state of the anvils for any solid), so the anvils end
 in the state their staircase of echoes converges to.
 
-**Conservation.**  Mass is exact (Lagrangian layer).  The layer's stress and velocity
-jump to the limit at once: its momentum changes by
+**Conservation.**  Mass is exact (Lagrangian layer).  The series would have taken the
+remaining echoes' time to bring the layer to its limit, by the anvils' impulse and
+work on it; ended at once, the layer's stress and velocity jump to the limit and what
+the anvils would still have exchanged with it is not exchanged: its momentum changes by
 ``rho0 (d u* - sum w_i u_i)``, counted (``momentum``, kg/(m^2 s)).  Its internal energy
 is chosen to keep its total energy ``rho0 sum w_i (e_i + u_i^2/2)`` exactly, at the
 limit stress (``energy_offset``, J/kg: that internal energy minus the one the layer's
