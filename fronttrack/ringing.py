@@ -26,8 +26,10 @@ largest stress jump inside the layer, ``tau = d / C`` the layer's transit time a
   (``fronttrack.coalesce``): replacing the staircase of echoes by one step at once
   moves echo ``n`` by ``2 n tau`` at most, an L1-in-time error of at most
   ``2 a 2 tau / (1 - |r|)^2``; as a length (times ``C``) it is held to
-  ``VISIBILITY tol l`` with ``l`` the resolution length (``coalesce_length = 0`` keeps
-  every echo).
+  ``VISIBILITY tol l`` with ``l`` the resolution length.
+
+A scene that keeps every front (``coalesce_length = 0``) or every wave
+(``negligible_stress = 0``) keeps every echo.
 
 **What.**  The limit state is the one Riemann solver's answer for the anvils' states
 (``materials.solve_contact``, or ``solve_boundary`` against the free face or wall).
@@ -93,7 +95,7 @@ def try_end(engine, group, t: float) -> bool:
     the rest of its series is below what the records resolve (module docstring);
     ``True`` if it was ended (the event is then done)."""
     res = engine.resolution
-    if res.coalesce_length <= 0.0:
+    if res.coalesce_length <= 0.0 or res.negligible <= 0.0:
         return False
     found = _layer(engine, group)
     if found is None:

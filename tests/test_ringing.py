@@ -176,8 +176,11 @@ def test_the_tungsten_ring_up_ends_at_the_anvils_contact_state():
     assert quiet_after(solution, entry)
 
 
-def test_without_a_resolution_length_every_echo_is_kept():
-    """``coalesce_length = 0 m`` keeps every front: the layer rings on."""
+@pytest.mark.parametrize("setting", [{"coalesce_length": "0 m"}, {"negligible_stress": "0 Pa"}])
+def test_a_scene_that_keeps_every_front_or_wave_keeps_every_echo(setting):
+    """``coalesce_length = 0 m`` keeps every front, ``negligible_stress = 0`` every wave:
+    the layer rings on (the default run ends it at 0.49 us)."""
     scene = dataclasses.replace(sandwich(HEAVY, HEAVY, "0.6 us"),
-                                accuracy=ft.Accuracy(coalesce_length="0 m"))
+                                accuracy=ft.Accuracy(**setting))
     assert ft.run(scene).accuracy_report["ringing_replaced"] == []
+    assert len(ft.run(sandwich(HEAVY, HEAVY, "0.6 us")).accuracy_report["ringing_replaced"]) == 1
