@@ -226,7 +226,8 @@ def _solve(scene, quiet: bool):
               f"(release: {report['release']}, {report['dropped_waves']} waves below "
               f"{report['negligible_stress']:.3g} Pa dropped, {report['coalesced_fronts']} "
               f"pairs of fronts closer than {report['coalesce_length'] * 1e6:.3g} um "
-              f"coalesced)", file=sys.stderr)
+              f"coalesced, {len(report['ringing_replaced'])} ringing layers ended at their "
+              f"limit)", file=sys.stderr)
         balance = report["balance"]
         if balance["momentum_error"] is not None and balance["energy_error"] is not None:
             print(f"balance: momentum {balance['momentum_error']:.2g} of its content, energy "

@@ -106,7 +106,8 @@ def _coalesce(engine, a: Front, b: Front, t: float) -> Front | None:
     xa, xb = a.position(t), b.position(t)
     distance = xb - xa
     if distance > res.coalesce_length:
-        weaker, tolerance = _weaker(a, b, left, middle, right, res.stress_scale), _tolerance(res)
+        weaker = _weaker(a, b, left, middle, right, res.stress_scale)
+        tolerance = record_tolerance(res)
         pulse = a.jump * b.jump < 0.0
         if distance > REACH * res.coalesce_length or (pulse and weaker > tolerance) or \
                 weaker * distance > VISIBILITY * tolerance * res.coalesce_length:
@@ -174,7 +175,7 @@ def _no_wider(left, middle, right, rounding: float) -> bool:
     return True
 
 
-def _tolerance(res) -> float:
+def record_tolerance(res) -> float:
     """The stress tolerance (Pa) weak pairs are measured against: the records', at most
     ``DEFAULT_RECORD_FRACTION`` of the stress scale (a scene that asks for no stress
     accuracy at all still keeps its pulses and plateaus)."""

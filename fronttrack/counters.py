@@ -34,7 +34,8 @@ class Counters:
     sum) and energy (J/m^2, signed: never positive) their strips moved;
     ``release_floors``: for each material that released toward a lower stress than its
     equation of state reaches, the highest such floor (Pa) and how many times
-    (``materials.riemann.release_target``).
+    (``materials.riemann.release_target``); ``ringing``: one entry per ringing layer
+    whose remaining echoes were replaced by their limit (``fronttrack.ringing``).
     """
 
     events: int = 0
@@ -54,6 +55,7 @@ class Counters:
     coalesced_momentum: float = 0.0
     coalesced_energy: float = 0.0
     release_floors: dict[str, tuple[float, int]] = field(default_factory=dict)
+    ringing: list[dict] = field(default_factory=list)
 
     def note_release_floor(self, name: str, stress: float) -> None:
         """Count a face of ``name`` that released only down to ``stress`` (Pa)."""

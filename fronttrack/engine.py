@@ -31,7 +31,7 @@ import time
 from characteristics.isentrope import IsentropeTables
 from materials import State, WavediagramError
 
-from . import coalesce, initiation, interactions, mismatch, outgoing, spall, zones
+from . import coalesce, initiation, interactions, mismatch, outgoing, ringing, spall, zones
 from .counters import Counters
 from .fronts import UNKNOWN, Front, Region, inside_fan
 from .kinds import FrontKind, Release
@@ -364,7 +364,7 @@ class Engine:
 
     def _process(self, seed: list[Front], t: float, x: float, timer: bool) -> None:
         group = self._gather(seed, t, x)
-        if not timer and zones.try_zone(self, group, t):
+        if not timer and (ringing.try_end(self, group, t) or zones.try_zone(self, group, t)):
             return
         sites = [f for f in group if f.is_site]
         site = sites[0] if sites else None

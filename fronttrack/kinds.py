@@ -53,6 +53,7 @@ class EventKind(StrEnum):
     LATTICE = "lattice"
     SHOCK_FORMATION = "shock-formation"
     INITIATION = "initiation"
+    RINGING = "ringing"
 
 
 class BoundaryKind(StrEnum):

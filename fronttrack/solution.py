@@ -246,6 +246,7 @@ class Solution:
             "coalesced_fronts": counters.coalesced,
             "coalesced_momentum": counters.coalesced_momentum,
             "coalesced_energy": counters.coalesced_energy,
+            "ringing_replaced": counters.ringing,
             "spall_spacing": acc.spall_spacing,
             "fracture_zones": [{"layer": z.layer, "x_lo": z.x_lo, "x_hi": z.x_hi, "t": z.t}
                                for z in engine.fracture_zones],
