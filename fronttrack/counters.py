@@ -34,7 +34,9 @@ class Counters:
     sum) and energy (J/m^2, signed: never positive) their strips moved;
     ``release_floors``: for each material that released toward a lower stress than its
     equation of state reaches, the highest such floor (Pa) and how many times
-    (``materials.riemann.release_target``).
+    (``materials.riemann.release_target``);
+    ``neglect_cost``: the bound (J/m^2) on the energy the neglected entropy contacts
+    may have moved, charged to their budget (``fronttrack.neglect``).
     """
 
     events: int = 0
@@ -54,6 +56,7 @@ class Counters:
     coalesced_momentum: float = 0.0
     coalesced_energy: float = 0.0
     release_floors: dict[str, tuple[float, int]] = field(default_factory=dict)
+    neglect_cost: float = 0.0
 
     def note_release_floor(self, name: str, stress: float) -> None:
         """Count a face of ``name`` that released only down to ``stress`` (Pa)."""
