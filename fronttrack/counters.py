@@ -35,8 +35,8 @@ class Counters:
     ``release_floors``: for each material that released toward a lower stress than its
     equation of state reaches, the highest such floor (Pa) and how many times
     (``materials.riemann.release_target``);
-    ``neglect_cost``: the bound (J/m^2) on the energy the neglected entropy contacts
-    may have moved, charged to their budget (``fronttrack.neglect``).
+    ``neglect_cost``: the sum of the bounds (J/m^2) on the energy the neglected entropy
+    contacts that could make energy may have moved (``fronttrack.neglect``).
     """
 
     events: int = 0

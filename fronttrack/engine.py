@@ -88,7 +88,7 @@ class Engine:
         self.signal_speed = signal_speed(scene, self.resolution.stress_scale)
         self.head: Front | None = None
         self.coalesce_budget: tuple[float, float] | None = None  # fronttrack.coalesce
-        self.neglect_budget = (0.0, 0.0)  # fronttrack.neglect: (J/m^2, next refresh time)
+        self.neglect_budget = neglect.NeglectBudget()
 
     # --- ids and objects ------------------------------------------------------------
     def next_front_id(self) -> int:

@@ -23,21 +23,26 @@ So the neglect gets a budget.  Its worst cost is bounded by
     cost = rho0 |e_L - e_R| * min(L, c_s (t_end - t))      (J/m^2)
 
 with ``L`` the thickness of the layer (a wave leaving it is solved again against the
-states it meets) and ``c_s`` the scene's signal speed (``Engine.signal_speed``).  A
-contact is neglected only while the costs of all contacts neglected so far stay within
-``BUDGET`` of the energy balance the accuracy settings promise
+states it meets) and ``c_s`` the scene's signal speed (``Engine.signal_speed``).  Where
+the neglect can make energy (``creates``) a contact is neglected only if its cost is
+within ``BUDGET`` of the energy balance the accuracy settings promise
 (``balance.promised_balance``) times the energy content of the material
-``sum rho0 (|e| + u^2/2) dX``; beyond it the contact is tracked.  The content is
-measured when the budget known is exhausted (it never shrinks), at most once per
-``REFRESH`` of the run's duration.
+``sum rho0 (|e| + u^2/2) dX``; beyond it the contact is tracked.  Each contact is judged
+on its own, never against what earlier ones spent: a symmetric scene solves the mirror
+images of an event one after the other, and must treat them alike.  The content is
+measured when a cost exceeds the budget known (it never shrinks), at most once per
+``REFRESH`` of the run's duration; the costs of the contacts neglected are summed in
+``accuracy.neglected_contact_cost``.
 """
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 from . import balance
 
 BUDGET = 0.25
-"""Fraction of the promised energy balance that neglected entropy contacts may cost."""
+"""Fraction of the promised energy balance one neglected entropy contact may cost."""
 
 REFRESH = 0.01
 """The energy content behind the budget is measured again at most once per this
@@ -63,21 +68,29 @@ def neglect_cost(engine, material, layer: int, left, right, t: float) -> float:
     return material.rho0 * abs(left.e - right.e) * sweep
 
 
+@dataclass
+class NeglectBudget:
+    """The energy (J/m^2) one neglected contact may cost (``limit``) and when the
+    content behind it may next be measured again (``refresh``, s)."""
+
+    limit: float = 0.0
+    refresh: float = 0.0
+
+
 def affordable(engine, cost: float, t: float) -> bool:
-    """Whether a neglect costing ``cost`` (J/m^2) stays within the budget; if so it is
-    charged to it (``Counters.neglect_cost``)."""
-    counters = engine.counters
-    spent = counters.neglect_cost + cost
-    if spent > engine.neglect_budget[0] and t >= engine.neglect_budget[1]:
+    """Whether a neglect costing ``cost`` (J/m^2) at time ``t`` (s) is within the
+    budget; if so it is counted (``Counters.neglect_cost``)."""
+    budget = engine.neglect_budget
+    if cost > budget.limit and t >= budget.refresh:
         content = sum(region.material.rho0 * width * (abs(region.state.e)
                                                       + 0.5 * region.state.u ** 2)
                       for region, width in _cells(engine, t))
         promise = balance.promised_balance(engine.resolution.report())
-        engine.neglect_budget = (max(engine.neglect_budget[0], BUDGET * promise * content),
-                                 t + REFRESH * engine.t_end)
-    if spent > engine.neglect_budget[0]:
+        budget.limit = max(budget.limit, BUDGET * promise * content)
+        budget.refresh = t + REFRESH * engine.t_end
+    if cost > budget.limit:
         return False
-    counters.neglect_cost = spent
+    engine.counters.neglect_cost += cost
     return True
 
 
