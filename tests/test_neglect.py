@@ -66,3 +66,18 @@ def test_only_a_hotter_region_that_continues_can_make_energy(left_continues,
     cold = State(sigma=1e9, u=0.0, v=1e-4, e=1000.0)
     left, right = (hot, cold) if hotter == "left" else (cold, hot)
     assert neglect.creates(left, right, left_continues, right_continues) is creates
+
+
+def test_regions_merged_behind_shocks_make_no_energy():
+    # campaign seed 355 (PMMA, Fe alpha-epsilon and Mo, Hugoniot release, 16 rays):
+    # where both families of an interaction were dropped the two regions were merged,
+    # the mean hotter than one of them, and the shocks beside it made 3.1 % of the
+    # energy; such contacts are now kept when their cost exceeds the budget, and the
+    # neglects left lose energy (1.8 %, beyond the 0.2 % promise: said in one line)
+    from random_scenes import campaign_scene
+    solution = run(campaign_scene(355))
+    report = solution.accuracy_report
+    balance = report["balance"]
+    assert balance["energy_error"] < 0.0
+    assert balance["momentum_error"] <= balance["promised"]
+    assert any(line.startswith("energy lost") for line in report["warnings"])
