@@ -35,7 +35,9 @@ class Counters:
     ``release_floors``: for each material that released toward a lower stress than its
     equation of state reaches, the highest such floor (Pa) and how many times
     (``materials.riemann.release_target``); ``ringing``: one entry per ringing layer
-    whose remaining echoes were replaced by their limit (``fronttrack.ringing``).
+    whose remaining echoes were replaced by their limit (``fronttrack.ringing``);
+    ``neglect_cost``: the sum of the bounds (J/m^2) on the energy the neglected entropy
+    contacts that could make energy may have moved (``fronttrack.neglect``).
     """
 
     events: int = 0
@@ -56,6 +58,7 @@ class Counters:
     coalesced_energy: float = 0.0
     release_floors: dict[str, tuple[float, int]] = field(default_factory=dict)
     ringing: list[dict] = field(default_factory=list)
+    neglect_cost: float = 0.0
 
     def note_release_floor(self, name: str, stress: float) -> None:
         """Count a face of ``name`` that released only down to ``stress`` (Pa)."""

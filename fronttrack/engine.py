@@ -31,7 +31,7 @@ import time
 from characteristics.isentrope import IsentropeTables
 from materials import State, WavediagramError
 
-from . import coalesce, initiation, interactions, mismatch, outgoing, ringing, spall, zones
+from . import coalesce, initiation, interactions, mismatch, neglect, outgoing, ringing, spall, zones
 from .counters import Counters
 from .fronts import UNKNOWN, Front, Region, inside_fan
 from .kinds import FrontKind, Release
@@ -91,6 +91,7 @@ class Engine:
         self.coalesce_budget: tuple[float, float] | None = None  # fronttrack.coalesce
         self.mismatches = mismatch.new_ledger()
         self.keep_weak_waves = False  # set while a site's mismatch is solved again
+        self.neglect_budget = neglect.NeglectBudget()
 
     # --- ids and objects ------------------------------------------------------------
     def next_front_id(self) -> int:
@@ -404,14 +405,15 @@ class Engine:
             region_left.state if region_left is not None else None)
         right_star = sol.right_star if right_specs is not None else (
             region_right.state if region_right is not None else None)
-        left_specs = left_specs or []
-        right_specs = right_specs or []
         middle = site if site is not None else new_site
         if middle is None and left_star is not None and right_star is not None:
-            middle = self._entropy_contact(left_star, right_star, material_left, t, x, group)
+            middle = self._entropy_contact(left_star, right_star, material_left, t, x, group,
+                                           region_left.layer, not left_specs, not right_specs)
             if middle is None:
                 left_star = right_star = self._neglected_contact_state(
                     left_star, right_star, material_left)
+        left_specs = left_specs or []
+        right_specs = right_specs or []
         # Fronts left to right, each with the state (and its table) on its right.
         items, right_of, tables = [], [], []
         for k, spec in enumerate(left_specs):
@@ -438,7 +440,8 @@ class Engine:
             site=middle.id if middle is not None else None))
 
     def _entropy_contact(self, left: State, right: State, material, t: float,
-                         x: float, group) -> Front | None:
+                         x: float, group, layer: int, left_continues: bool,
+                         right_continues: bool) -> Front | None:
         """A contact for the entropy jump between two star states, if it matters.
 
         A contact that would reflect less than the negligible stress from the scene's
@@ -460,8 +463,13 @@ class Engine:
         heat = material.rho0 * abs(left.e - right.e) / res.stress_scale
         keep = self.acc.entropy_contacts and max(jump, heat) > ENTROPY_JUMP_TOLERANCE
         if keep and res.negligible > 0.0 and math.isfinite(left.v + right.v):
+            # below both thresholds, the waves beside a hotter region that continues may
+            # still make more energy than the run can afford (fronttrack.neglect)
             keep = (material.contact_reflection(left, right, res.stress_scale) > res.negligible
-                    or material.rho0 * abs(left.e - right.e) > res.negligible)
+                    or material.rho0 * abs(left.e - right.e) > res.negligible
+                    or neglect.creates(left, right, left_continues, right_continues)
+                    and not neglect.affordable(self, neglect.neglect_cost(
+                        self, material, layer, left, right, t), t))
         if keep and _contact_within(group, x, self.acc.contact_resolution):
             keep = False
             counters.unresolved_contacts += 1
