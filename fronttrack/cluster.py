@@ -20,11 +20,17 @@ length is ``CLUSTER_FRACTION`` of the resolution length ``l`` of the records
 front within ``delta`` of the event point: waves of any kind, any number of entropy
 contacts, and at most one other site (an interface or a boundary; a gap ends the
 cluster).  The group is then one Riemann problem between the state left of it and the
-state right of it, solved at the site if there is one: for a hyperbolic system the
-interactions of waves confined to a strip of width ``delta`` end, once they have run
-apart, in the Riemann solution of the strip's outer states, up to terms of order
-``delta`` (Glimm's interaction estimates); the entropy contacts inside are replaced by
-the one contact, if any, that Riemann solution leaves.
+state right of it, solved at the site if there is one; the entropy contacts inside are
+replaced by the one contact, if any, that Riemann solution leaves.  This changes the
+data only inside the strip: by at most ``delta`` times the largest jump there, in L1
+over X.  Solutions of a hyperbolic system of conservation laws depend Lipschitz-
+continuously in L1 on their data (for data of small total variation; Bressan,
+*Hyperbolic Systems of Conservation Laws*, Oxford 2000, ch. 8), so every later state
+changes by no more than a fixed multiple of that.  Solved pair by pair instead, each
+event drops its echoes below the negligible stress, and a cluster of thousands of
+events adds thousands of those errors: in ``tests/test_pile_up.py`` the gathered face
+velocity converges (633.01, 633.35, 633.37 m/s at 1, 1/10, 1/100 of the default
+negligible stress) where the pair-by-pair run ends 10 m/s off, at 623.1 m/s.
 
 **Conservation.**  Mass is exact (Lagrangian X).  Before the event the strip
 ``[x_first, x_last]`` held the states between the gathered fronts; after it the outer

@@ -16,9 +16,10 @@ from types import SimpleNamespace
 import pytest
 
 import fronttrack as ft
-from fronttrack import cluster
+from fronttrack import cluster, coalesce
+from fronttrack.engine import Engine
 from fronttrack.kinds import FrontKind
-from materials import FinitePlastic, State
+from materials import FinitePlastic, LinearElastic, State
 
 HEAVY = FinitePlastic("A", 18321.0, 2840.7, 1.198, 2.199, 43.03e9, 1.3196e9)
 LIGHT = FinitePlastic("B", 11316.0, 2858.3, 1.1873, 1.024, 49.34e9, 0.8746e9,
@@ -116,3 +117,50 @@ def test_the_principal_site_is_the_interface_or_boundary():
     assert cluster.principal_site([contact]) is contact
     assert cluster.principal_site([contact, other]) is None
     assert cluster.principal_site([]) is None
+
+
+ELASTIC = LinearElastic("elastic", 2650.0, 5000.0)
+
+
+def _contact_pair(mismatch: float):
+    """An engine whose only layer holds two contacts 1 um apart at 0.5 mm, each with
+    a stress mismatch ``mismatch`` (Pa, the same sign) and the velocity that goes with
+    it on the right-going elastic branch (what a dropped echo leaves)."""
+    scene = ft.Scene(layers=(ft.Layer(ELASTIC, "1 mm", velocity="10 m/s"),),
+                     left=ft.Boundary("wall"), t_end="0.1 us",
+                     accuracy=ft.Accuracy(negligible_stress="1 MPa"))
+    engine = Engine(scene)
+    engine._build()
+    left_end, right_end = engine.head, engine.head.next
+    states = [ELASTIC.initial_state(k * mismatch, -k * mismatch / (2650.0 * 5000.0))
+              for k in range(3)]
+    chain = [left_end]
+    for k, x in enumerate((0.5e-3, 0.501e-3)):
+        front = engine.new_front(FrontKind.CONTACT, x, 0.0, bond="bonded")
+        front.region_right = engine.new_region(states[k + 1], ELASTIC, 0, 0.0, (x, 0.0),
+                                               (x, 0.0))
+        chain.append(front)
+    chain.append(right_end)
+    left_end.region_right = engine.new_region(states[0], ELASTIC, 0, 0.0, (0.0, 0.0),
+                                              (0.5e-3, 0.0))
+    for a, b in zip(chain, chain[1:], strict=False):
+        a.next, b.prev = b, a
+    return engine, chain[1], chain[2]
+
+
+@pytest.mark.parametrize(("mismatch", "merged"), [(0.4e6, True), (0.6e6, False)])
+def test_a_comb_of_contacts_is_one_contact_while_its_mismatch_stays_negligible(
+        mismatch, merged):
+    # two mismatches of one sign add up: 0.8 MPa is below the 1 MPa negligible stress
+    # (one contact then carries what one dropped echo could leave), 1.2 MPa is not
+    engine, a, b = _contact_pair(mismatch)
+    front = coalesce._coalesce(engine, a, b, 0.0)
+    assert (front is not None) == merged
+    assert engine.counters.coalesced == int(merged)
+    if merged:
+        assert front.kind == FrontKind.CONTACT and not a.alive and not b.alive
+        assert front.prev.region_right.state.sigma == 0.0
+        assert front.region_right.state.sigma == pytest.approx(2 * mismatch, rel=1e-9)
+        # the strip's energy is kept (to rounding of its content)
+        strip = ELASTIC.rho0 * 1e-6 * coalesce.specific_energy(a.region_right.state)
+        assert abs(engine.counters.coalesced_energy) <= 1e-12 * strip
