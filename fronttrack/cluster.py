@@ -84,9 +84,10 @@ class ClusterWatch:
         """Note the event at ``(x, t)`` (m, s); whether it piles up on the recent ones."""
         near = 0
         if self.length > 0.0:
-            for t_i, x_i in self.recent:
-                if t - t_i <= self.duration and abs(x - x_i) <= self.length:
-                    near += 1
+            for t_i, x_i in reversed(self.recent):  # events come in time order
+                if t - t_i > self.duration:
+                    break
+                near += abs(x - x_i) <= self.length
         self.recent.append((t, x))
         return near >= PILE
 
