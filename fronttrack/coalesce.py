@@ -19,8 +19,11 @@ most 1e-3 of the stress scale):
   (on a linear branch it does, to rounding, and its energy jump is the trapezoid of a
   straight line, as each part's is: the merged wave is exact);
 - two contacts whose outer states ``L`` and ``R`` differ in stress and velocity no
-  more than across the wider of the two (a contact carries the mismatch a dropped
-  wave leaves; coalescing never widens it);
+  more than across the wider of the two, or no more than a negligible wave
+  (``Resolution.is_negligible``): a contact carries the mismatch a dropped wave
+  leaves, and coalescing never leaves one wider than that (a comb of contacts whose
+  mismatches add up, left by the rays of a fan each dropping a weak reflection, is
+  one contact while their sum stays negligible);
 
 and ``d <= l``, or, for a weak pair, ``w d <= VISIBILITY * tol * l`` with ``d <= REACH
 * l``, where ``w`` is the weaker front's strength (a wave's stress jump; a contact's
@@ -118,17 +121,19 @@ def _coalesce(engine, a: Front, b: Front, t: float) -> Front | None:
         mismatch = (sl.sigma - sr.sigma) - a.direction * rho0 * abs(a.speed) * (sl.u - sr.u)
         if abs(mismatch) > JUMP_TOLERANCE * res.stress_scale:
             return None
-    elif not _no_wider(sl, sm, sr, 1e-12 * res.stress_scale):
+    elif not (_no_wider(sl, sm, sr, 1e-12 * res.stress_scale)
+              or res.is_negligible(sl.sigma - sr.sigma, sl.u - sr.u)):
         return None
     share = _energy_share(sl, sm, sr)
     if share is None:
         return None
     x = xa + share * distance
     momentum = abs(rho0 * ((x - xa) * sl.u + (xb - x) * sr.u - distance * sm.u))
-    energy = rho0 * ((x - xa) * _energy(sl) + (xb - x) * _energy(sr) - distance * _energy(sm))
+    energy = rho0 * ((x - xa) * specific_energy(sl) + (xb - x) * specific_energy(sr)
+                     - distance * specific_energy(sm))
     counters = engine.counters
     if not _within(engine.coalesce_budget, counters, momentum, energy) and \
-            not _within(_budget(engine, t), counters, momentum, energy):
+            not _within(budget(engine, t), counters, momentum, energy):
         return None
     counters.coalesced += 1
     counters.coalesced_momentum += momentum
@@ -143,7 +148,7 @@ def _within(budget, counters, momentum: float, energy: float) -> bool:
                                    and -(counters.coalesced_energy + energy) <= budget[1])
 
 
-def _budget(engine, t: float) -> tuple[float, float]:
+def budget(engine, t: float) -> tuple[float, float]:
     """The momentum (kg/(m^2 s)) and energy (J/m^2) all coalescing of a run may move:
     ``BUDGET`` of the balance the accuracy settings promise, times the largest momentum
     content ``sum rho0 |u| dX`` and energy content ``sum rho0 (|e| + u^2/2) dX`` the
@@ -192,7 +197,7 @@ def _weaker(a: Front, b: Front, left, middle, right, scale: float) -> float:
                material.contact_reflection(middle.state, right.state, scale))
 
 
-def _energy(state) -> float:
+def specific_energy(state) -> float:
     """Specific total energy ``e + u^2/2`` (J/kg)."""
     return state.e + 0.5 * state.u * state.u
 
@@ -200,7 +205,7 @@ def _energy(state) -> float:
 def _energy_share(left, middle, right) -> float | None:
     """The fraction of the strip given to the left state so that the strip keeps its
     energy, clamped to lose energy rather than make it; ``None`` if any share makes it."""
-    el, em, er = _energy(left), _energy(middle), _energy(right)
+    el, em, er = specific_energy(left), specific_energy(middle), specific_energy(right)
     if em < min(el, er) or not math.isfinite(el + em + er):
         return None
     if el == er:

@@ -32,6 +32,9 @@ class Counters:
     carried; ``coalesced``: pairs of fronts made one because they ran closer than the
     records resolve (``fronttrack.coalesce``), with the momentum (kg/(m^2 s), absolute
     sum) and energy (J/m^2, signed: never positive) their strips moved;
+    ``gathered``: fronts added to an event because events piled up there
+    (``fronttrack.cluster``), with the momentum (absolute sum) and energy (signed) their
+    strips moved;
     ``release_floors``: for each material that released toward a lower stress than its
     equation of state reaches, the highest such floor (Pa) and how many times
     (``materials.riemann.release_target``); ``ringing``: one entry per ringing layer
@@ -56,6 +59,9 @@ class Counters:
     coalesced: int = 0
     coalesced_momentum: float = 0.0
     coalesced_energy: float = 0.0
+    gathered: int = 0
+    gathered_momentum: float = 0.0
+    gathered_energy: float = 0.0
     release_floors: dict[str, tuple[float, int]] = field(default_factory=dict)
     ringing: list[dict] = field(default_factory=list)
     neglect_cost: float = 0.0

@@ -31,7 +31,18 @@ import time
 from characteristics.isentrope import IsentropeTables
 from materials import State, WavediagramError
 
-from . import coalesce, initiation, interactions, mismatch, neglect, outgoing, ringing, spall, zones
+from . import (
+    cluster,
+    coalesce,
+    initiation,
+    interactions,
+    mismatch,
+    neglect,
+    outgoing,
+    ringing,
+    spall,
+    zones,
+)
 from .counters import Counters
 from .fronts import UNKNOWN, Front, Region, inside_fan
 from .kinds import FrontKind, Release
@@ -92,6 +103,7 @@ class Engine:
         self.mismatches = mismatch.new_ledger()
         self.keep_weak_waves = False  # set while a site's mismatch is solved again
         self.neglect_budget = neglect.NeglectBudget()
+        self.cluster_watch = cluster.ClusterWatch(self.resolution, self.signal_speed)
 
     # --- ids and objects ------------------------------------------------------------
     def next_front_id(self) -> int:
@@ -365,10 +377,12 @@ class Engine:
 
     def _process(self, seed: list[Front], t: float, x: float, timer: bool) -> None:
         group = self._gather(seed, t, x)
-        if not timer and (ringing.try_end(self, group, t) or zones.try_zone(self, group, t)):
+        piled = None if timer else cluster.gather(self, group, t, x)
+        if piled is not None:
+            group, x = piled
+        elif not timer and (ringing.try_end(self, group, t) or zones.try_zone(self, group, t)):
             return
-        sites = [f for f in group if f.is_site]
-        site = sites[0] if sites else None
+        site = cluster.principal_site([f for f in group if f.is_site])
         before = group[0].prev
         region_left = before.region_right if before is not None else None
         region_right = group[-1].region_right

@@ -248,6 +248,9 @@ class Solution:
             "coalesced_momentum": counters.coalesced_momentum,
             "coalesced_energy": counters.coalesced_energy,
             "ringing_replaced": counters.ringing,
+            "gathered_fronts": counters.gathered,
+            "gathered_momentum": counters.gathered_momentum,
+            "gathered_energy": counters.gathered_energy,
             "spall_spacing": acc.spall_spacing,
             "fracture_zones": [{"layer": z.layer, "x_lo": z.x_lo, "x_hi": z.x_hi, "t": z.t}
                                for z in engine.fracture_zones],

@@ -240,12 +240,15 @@ def test_square_stress_pulse_from_two_points_at_one_time():
 def test_very_weak_impact_with_release_fans(velocity, energy_tolerance):
     """Cu on Cu at 1 nm/s (strain 1e-13, below what stored volumes resolve) and 1 mm/s,
     isentropic release: the acoustic limit, rear surface at V to 1e-12; the balance holds
-    (at 1 nm/s exactly; at 1 mm/s to the fans' discretisation)."""
+    (at 1 nm/s exactly; at 1 mm/s to the fans' discretisation).  Every front is tracked
+    (``coalesce_length = 0``): the fans are a fraction of a nanometre wide, and by
+    default their crossings pile up and are gathered (``fronttrack.cluster``), which
+    moves 1e-7 of the balance, within the promise but not exact."""
     cu = copper()
     d = 1e-3
     scene = Scene(layers=(Layer(cu, d, velocity), Layer(cu, 3 * d, bond="unbonded")),
                   t_end=1.4e-6, probes=(Probe("rear", "right"),),
-                  accuracy=Accuracy(rays_per_fan=16))
+                  accuracy=Accuracy(rays_per_fan=16, coalesce_length=0.0))
     sol = run(scene)
     rear = sol.history("rear")
     assert rear.u[1] == pytest.approx(velocity, rel=1e-12)
