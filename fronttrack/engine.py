@@ -31,7 +31,7 @@ import time
 from characteristics.isentrope import IsentropeTables
 from materials import State, WavediagramError
 
-from . import coalesce, initiation, interactions, outgoing, spall, zones
+from . import archive, coalesce, initiation, interactions, outgoing, spall, zones
 from .counters import Counters
 from .fronts import UNKNOWN, Front, Region, inside_fan
 from .kinds import FrontKind, Release
@@ -73,8 +73,11 @@ class Engine:
         self._wave_ids = itertools.count()
         self._seq = itertools.count()
         self._heap: list = []
-        self.fronts: list[Front] = []
+        self.fronts: list[Front] = []  # objects not yet compacted (fronttrack.archive)
         self.regions: list[Region] = []
+        self.front_table = archive.FrontTable()
+        self.region_table = archive.RegionTable()
+        self.compact_at = archive.COMPACT_BATCH
         self.patches: list = []
         self.events: list[EventRecord] = []
         self.spalls: list = []
@@ -302,6 +305,8 @@ class Engine:
                                 else f"time limit of {limit:g} s reached")
                 break
             self._process(seed, t, x, timer=kind == "site")
+            if len(self.fronts) >= self.compact_at:
+                archive.compact(self)
             if self.progress is not None and counters.events % 1000 == 0:
                 self.progress(counters.events, t)
         self._finish()

@@ -1,0 +1,355 @@
+"""Finished fronts and regions, kept as columns of numbers.
+
+A long run makes about two fronts and one region per event.  As the engine's objects
+(``fronttrack.fronts.Front``, with its links and lists, and ``Region``, with its lists of
+``(X, t)`` vertex tuples and its ``State``) they cost about 2 kB per event, and a run of
+10^5 events would hold hundreds of megabytes.  Once a front has died and a region has
+ended nothing in the engine changes them again, and the diagram, the records and the
+outputs need only their numbers: ``compact`` moves them into a ``FrontTable`` and a
+``RegionTable`` (8-byte floats and integers, a front in about 130 B, a region with its
+polygon in about 170 B) and the engine drops the objects.  The engine compacts whenever
+its lists of objects have doubled since the last time, and once more at the end: a
+``Solution`` reads only the tables.
+
+Rows are kept in the order of the ids (the order in which the engine made the objects),
+so records come out in the order they always had.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterator
+
+import numpy as np
+
+from materials import State
+
+from .fronts import FrontRecord, RegionRecord, polygon_of
+from .kinds import FrontKind
+
+COMPACT_BATCH = 4096
+"""The engine compacts when it holds this many front objects more than twice the number
+it kept after its last compaction (the live ones): each object is copied once, and the
+copying costs a few per cent of the time the engine took to make it."""
+
+_FRONT_FLOATS = ("x0", "t0", "x1", "t1", "speed", "jump", "invariant")
+_FRONT_INTS = ("id", "direction", "wave", "fan", "ray_index", "ray_count", "left_region",
+               "right_region_id", "lineage")
+_FRONT_CODES = ("kind", "bond", "side")
+_STATE_FIELDS = ("sigma", "u", "v", "e", "plastic_strain")
+_REGION_FLOATS = ("t_start", "t_end", *_STATE_FIELDS)
+_REGION_INTS = ("id", "layer")
+_REGION_CODES = ("material", "table")
+
+
+class _Codes:
+    """Distinct values numbered in order of first sight: equal values share a code, or,
+    with ``by_identity``, only the same object does (materials, isentrope tables)."""
+
+    def __init__(self, by_identity: bool = False):
+        self.values: list = []
+        self._index: dict = {}
+        self._by_identity = by_identity
+
+    def code(self, value) -> int:
+        key = id(value) if self._by_identity else value
+        found = self._index.get(key)
+        if found is None:
+            found = self._index[key] = len(self.values)
+            self.values.append(value)
+        return found
+
+
+def _floats(objects, name: str) -> np.ndarray:
+    """The attribute ``name`` of each object as float64 (``None`` as NaN)."""
+    return np.fromiter((math.nan if (value := getattr(o, name)) is None else value
+                        for o in objects), float, len(objects))
+
+
+def _ints(objects, name: str) -> np.ndarray:
+    """The attribute ``name`` of each object as int64 (``None`` as -1: ids are >= 0)."""
+    return np.fromiter((-1 if (value := getattr(o, name)) is None else value
+                        for o in objects), np.int64, len(objects))
+
+
+def _optional(value: float) -> float | None:
+    return None if math.isnan(value) else float(value)
+
+
+def _optional_int(value: int) -> int | None:
+    return None if value < 0 else int(value)
+
+
+class _Columns:
+    """Columns filled in blocks, merged (and ordered by ``id``) when read; ``empty``: the
+    columns of no rows."""
+
+    def __init__(self, empty: dict[str, np.ndarray]):
+        self._blocks: list[dict[str, np.ndarray]] = []
+        self._empty = empty
+
+    def _append(self, block: dict[str, np.ndarray]) -> None:
+        self._blocks.append(block)
+
+    @property
+    def columns(self) -> dict[str, np.ndarray]:
+        if len(self._blocks) != 1:
+            self._blocks = [self._merged(self._blocks)]
+        return self._blocks[0]
+
+    def _merged(self, blocks: list[dict[str, np.ndarray]]) -> dict[str, np.ndarray]:
+        if not blocks:
+            return dict(self._empty)
+        merged = {name: np.concatenate([b[name] for b in blocks]) for name in blocks[0]}
+        order = np.argsort(merged["id"], kind="stable")
+        return {name: column[order] for name, column in merged.items()}
+
+    def __len__(self) -> int:
+        return sum(len(b["id"]) for b in self._blocks)
+
+
+class FrontTable(_Columns):
+    """Finished fronts: one row each, the fields of a ``FrontRecord`` (SI units).
+
+    Floats ``x0``, ``t0``, ``x1``, ``t1``, ``speed``, ``jump``, ``invariant`` (``None`` as
+    NaN); integers ``id``, ``direction``, ``wave``, ``fan``, ``ray_index``, ``ray_count``,
+    ``left_region``, ``right_region_id``, ``lineage`` (``None`` as -1); ``kind``,
+    ``bond`` and ``side`` as codes into ``codes[name].values``.  The few fronts with a
+    ``history`` or ``earlier_regions`` keep them in dictionaries by front id.
+    """
+
+    def __init__(self):
+        super().__init__({name: np.empty(0) for name in _FRONT_FLOATS}
+                         | {name: np.empty(0, np.int64) for name in (*_FRONT_INTS,
+                                                                    *_FRONT_CODES)})
+        self.codes = {name: _Codes() for name in _FRONT_CODES}
+        self.history: dict[int, tuple] = {}
+        self.earlier_regions: dict[int, tuple] = {}
+
+    def add(self, fronts: list) -> None:
+        """Copy ``fronts`` (``Front`` objects that will not change again) into rows."""
+        if not fronts:
+            return
+        block = {name: _floats(fronts, name) for name in _FRONT_FLOATS}
+        block |= {name: _ints(fronts, name) for name in _FRONT_INTS}
+        for name, codes in self.codes.items():
+            block[name] = np.fromiter((codes.code(getattr(f, name)) for f in fronts),
+                                      np.int64, len(fronts))
+        for front in fronts:
+            if front.history:
+                self.history[front.id] = tuple(front.history)
+            if front.earlier_regions:
+                self.earlier_regions[front.id] = tuple(front.earlier_regions)
+        self._append(block)
+
+    def count(self, kind: FrontKind) -> int:
+        """How many fronts of ``kind`` the table holds."""
+        values = self.codes["kind"].values
+        if kind not in values:
+            return 0
+        return int(np.count_nonzero(self.columns["kind"] == values.index(kind)))
+
+    def records(self) -> Iterator[FrontRecord]:
+        """The rows as frozen records, in id order."""
+        c = self.columns
+        kinds, bonds, sides = (self.codes[name].values for name in _FRONT_CODES)
+        rows = zip(*(c[name].tolist() for name in (*_FRONT_FLOATS, *_FRONT_INTS,
+                                                  *_FRONT_CODES)), strict=True)
+        for (x0, t0, x1, t1, speed, jump, invariant, front_id, direction, wave, fan,
+             ray_index, ray_count, left, right, lineage, kind, bond, side) in rows:
+            yield FrontRecord(
+                id=front_id, kind=kinds[kind], x0=x0, t0=t0, x1=_optional(x1),
+                t1=_optional(t1), speed=speed, direction=direction, jump=jump,
+                wave=_optional_int(wave), fan=_optional_int(fan), ray_index=ray_index,
+                ray_count=ray_count, invariant=invariant, bond=bonds[bond], side=sides[side],
+                left_region=_optional_int(left), right_region_id=_optional_int(right),
+                history=self.history.get(front_id, ()),
+                earlier_regions=self.earlier_regions.get(front_id, ()), lineage=lineage)
+
+    def site_history(self, kind: FrontKind, side: str) -> tuple:
+        """The ``(t, kind)`` history of the first front of ``kind`` on ``side``."""
+        c = self.columns
+        kinds, sides = self.codes["kind"].values, self.codes["side"].values
+        for row in range(len(c["id"])):
+            if kinds[c["kind"][row]] == kind and sides[c["side"][row]] == side:
+                return self.history.get(int(c["id"][row]), ())
+        raise KeyError(f"no {kind} front on side {side!r}")
+
+    def segments(self) -> dict[str, np.ndarray]:
+        """One straight segment per front and per region on its right (its
+        ``earlier_regions`` split it): ``x0``, ``t0``, ``t1``, ``speed``, ``right`` (region id,
+        -1 for none), ``ray``, ``family``, ``invariant``, ``lineage``.  Fronts that never
+        lasted (``t1 < t0``) have none."""
+        c = self.columns
+        valid = ~(c["t1"] < c["t0"]) & ~np.isnan(c["t1"])
+        counts = valid.astype(np.int64)
+        row_of = {}
+        if self.earlier_regions:
+            row_of = dict(zip(c["id"].tolist(), range(len(c["id"])), strict=True))
+            for front_id, earlier in self.earlier_regions.items():
+                row = row_of[front_id]
+                counts[row] += len(earlier) if valid[row] else 0
+        row = np.repeat(np.arange(len(counts)), counts)
+        start, end = c["t0"][row], c["t1"][row]
+        right = c["right_region_id"][row]
+        first = np.cumsum(counts) - counts
+        for front_id, earlier in self.earlier_regions.items():
+            r = row_of[front_id]
+            if not valid[r]:
+                continue
+            k, n = first[r], len(earlier)
+            times = [t for t, _ in earlier]
+            end[k:k + n] = times
+            right[k:k + n] = [region for _, region in earlier]
+            start[k + 1:k + n + 1] = times
+        speed = c["speed"][row]
+        x0 = np.where(speed == 0.0, c["x0"][row], c["x0"][row] + speed * (start - c["t0"][row]))
+        return {"x0": x0, "t0": start, "t1": end, "speed": speed, "right": right,
+                "ray": c["kind"][row] == self._code_of_ray(), "family": c["direction"][row],
+                "invariant": c["invariant"][row], "lineage": c["lineage"][row]}
+
+    def _code_of_ray(self) -> int:
+        values = self.codes["kind"].values
+        return values.index(FrontKind.RAY) if FrontKind.RAY in values else -1
+
+
+class RegionTable(_Columns):
+    """Finished regions: one row each (SI units).
+
+    Floats ``t_start``, ``t_end`` (``None`` as NaN), the state ``sigma``, ``u``, ``v``,
+    ``e``, ``plastic_strain`` and its Riemann invariants ``jp``, ``jm`` once known (NaN
+    before); integers ``id``, ``layer``, ``in_fan``; ``material`` and ``table`` (its
+    isentrope, ``fronts.UNKNOWN`` until looked up) as codes into ``codes[name].values``.
+    The boundary chains are points ``chain_x``, ``chain_t`` (m, s): a row's left chain
+    is the ``n_left`` points from ``chain_start``, its right chain the ``n_right`` after
+    them.  A state of a model with more fields than ``State`` (``HardenedState``) is
+    kept whole in ``special_states`` by region id.
+    """
+
+    def __init__(self):
+        super().__init__({name: np.empty(0) for name in (*_REGION_FLOATS, "jp", "jm")}
+                         | {name: np.empty(0, np.int64) for name in (
+                             *_REGION_INTS, *_REGION_CODES, "in_fan", "n_left", "n_right",
+                             "chain_start")})
+        self.codes = {"material": _Codes(by_identity=True), "table": _Codes(by_identity=True)}
+        self.special_states: dict[int, State] = {}
+        self._chains: list[tuple[np.ndarray, np.ndarray]] = []
+        self._points = 0
+        self._row_of: np.ndarray | None = None
+
+    def add(self, regions: list) -> None:
+        """Copy ``regions`` (``Region`` objects that will not change again) into rows."""
+        if not regions:
+            return
+        n = len(regions)
+        states = [r.state for r in regions]
+        block = {name: _floats(regions, name) for name in ("t_start", "t_end")}
+        block |= {name: _floats(states, name) for name in _STATE_FIELDS}
+        block |= {name: _ints(regions, name) for name in _REGION_INTS}
+        block["in_fan"] = np.fromiter((r.in_fan for r in regions), np.int64, n)
+        for name, codes in self.codes.items():
+            block[name] = np.fromiter((codes.code(getattr(r, name)) for r in regions),
+                                      np.int64, n)
+        invariants = [r.invariants or (math.nan, math.nan) for r in regions]
+        block["jp"] = np.fromiter((j[0] for j in invariants), float, n)
+        block["jm"] = np.fromiter((j[1] for j in invariants), float, n)
+        block["n_left"] = np.fromiter((len(r.left_points) for r in regions), np.int64, n)
+        block["n_right"] = np.fromiter((len(r.right_points) for r in regions), np.int64, n)
+        block["chain_start"] = self._points + np.cumsum(block["n_left"] + block["n_right"]) \
+            - (block["n_left"] + block["n_right"])
+        points = [p for r in regions for p in (*r.left_points, *r.right_points)]
+        self._chains.append((np.fromiter((p[0] for p in points), float, len(points)),
+                             np.fromiter((p[1] for p in points), float, len(points))))
+        self._points += len(points)
+        for region in regions:
+            if type(region.state) is not State:
+                self.special_states[region.id] = region.state
+        self._append(block)
+        self._row_of = None
+
+    def _chain(self) -> tuple[np.ndarray, np.ndarray]:
+        if len(self._chains) != 1:
+            self._chains = [(np.concatenate([x for x, _ in self._chains] or [np.empty(0)]),
+                             np.concatenate([t for _, t in self._chains] or [np.empty(0)]))]
+        return self._chains[0]
+
+    def row(self, region_id: int) -> int:
+        """The row of region ``region_id``, or -1 if the table does not hold it."""
+        if self._row_of is None:
+            ids = self.columns["id"]
+            self._row_of = np.full(int(ids.max()) + 1 if len(ids) else 0, -1, np.int64)
+            self._row_of[ids] = np.arange(len(ids))
+        return int(self._row_of[region_id]) if 0 <= region_id < len(self._row_of) else -1
+
+    def state(self, row: int) -> State:
+        c = self.columns
+        special = self.special_states.get(int(c["id"][row]))
+        if special is not None:
+            return special
+        return State(*(float(c[name][row]) for name in _STATE_FIELDS))
+
+    def material(self, row: int):
+        return self.codes["material"].values[self.columns["material"][row]]
+
+    def table(self, row: int):
+        """The row's isentrope table (``fronts.UNKNOWN`` if never looked up)."""
+        return self.codes["table"].values[self.columns["table"][row]]
+
+    def set_table(self, row: int, table) -> None:
+        self.columns["table"][row] = self.codes["table"].code(table)
+
+    def invariants(self, row: int) -> tuple[float, float] | None:
+        c = self.columns
+        jp = float(c["jp"][row])
+        return None if math.isnan(jp) else (jp, float(c["jm"][row]))
+
+    def set_invariants(self, row: int, invariants: tuple[float, float]) -> None:
+        self.columns["jp"][row], self.columns["jm"][row] = invariants
+
+    def chains(self, row: int) -> tuple[list, list]:
+        """The left and right boundary chains of a row as ``(X, t)`` tuples (m, s)."""
+        c = self.columns
+        x, t = self._chain()
+        start, n_left, n_right = (int(c[name][row]) for name in ("chain_start", "n_left",
+                                                                   "n_right"))
+        points = list(zip(x[start:start + n_left + n_right].tolist(),
+                          t[start:start + n_left + n_right].tolist(), strict=True))
+        return points[:n_left], points[n_left:]
+
+    def record(self, row: int) -> RegionRecord:
+        """The frozen record of a row."""
+        c = self.columns
+        left, right = self.chains(row)
+        return RegionRecord(id=int(c["id"][row]), state=self.state(row),
+                            material=self.material(row), layer=int(c["layer"][row]),
+                            t_start=float(c["t_start"][row]),
+                            t_end=_optional(c["t_end"][row]), in_fan=bool(c["in_fan"][row]),
+                            vertices=tuple(polygon_of(left, right)),
+                            birth=left[0] if left else None)
+
+    def records(self) -> Iterator[RegionRecord]:
+        """The rows as frozen records, in id order."""
+        return (self.record(row) for row in range(len(self.columns["id"])))
+
+    def densest(self) -> list[tuple[object, float]]:
+        """``(material, smallest finite specific volume)`` for each material (m^3/kg)."""
+        c = self.columns
+        found = []
+        for code, material in enumerate(self.codes["material"].values):
+            v = c["v"][(c["material"] == code) & np.isfinite(c["v"])]
+            if v.size:
+                found.append((material, float(v.min())))
+        return found
+
+
+def compact(engine, final: bool = False) -> None:
+    """Move the dead fronts and the ended regions of ``engine`` into its tables (all of
+    them, with ``final``, once the run is over) and keep only the others as objects."""
+    fronts, regions = engine.fronts, engine.regions
+    done = [f for f in fronts if final or (not f.alive and f.t1 is not None)]
+    ended = [r for r in regions if final or r.t_end is not None]
+    engine.front_table.add(done)
+    engine.region_table.add(ended)
+    engine.fronts = [] if final else [f for f in fronts if f.alive or f.t1 is None]
+    engine.regions = [] if final else [r for r in regions if r.t_end is None]
+    engine.compact_at = 2 * len(engine.fronts) + COMPACT_BATCH
