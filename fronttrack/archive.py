@@ -32,13 +32,17 @@ COMPACT_BATCH = 4096
 it kept after its last compaction (the live ones): each object is copied once, and the
 copying costs a few per cent of the time the engine took to make it."""
 
+ID = np.int32
+"""Ids and counts: an id numbers an object the engine made, far below 2^31 in any run
+that fits in memory (a live ``Front`` alone takes about 500 B)."""
+
 _FRONT_FLOATS = ("x0", "t0", "x1", "t1", "speed", "jump", "invariant")
-_FRONT_INTS = ("id", "direction", "wave", "fan", "ray_index", "ray_count", "left_region",
-               "right_region_id", "lineage")
+_FRONT_INTS = {"id": ID, "direction": np.int8, "wave": ID, "fan": ID, "ray_index": ID,
+               "ray_count": ID, "left_region": ID, "right_region_id": ID, "lineage": ID}
 _FRONT_CODES = ("kind", "bond", "side")
 _STATE_FIELDS = ("sigma", "u", "v", "e", "plastic_strain")
 _REGION_FLOATS = ("t_start", "t_end", *_STATE_FIELDS)
-_REGION_INTS = ("id", "layer")
+_REGION_INTS = {"id": ID, "layer": ID}
 _REGION_CODES = ("material", "table")
 
 
@@ -66,10 +70,10 @@ def _floats(objects, name: str) -> np.ndarray:
                         for o in objects), float, len(objects))
 
 
-def _ints(objects, name: str) -> np.ndarray:
-    """The attribute ``name`` of each object as int64 (``None`` as -1: ids are >= 0)."""
+def _ints(objects, name: str, dtype) -> np.ndarray:
+    """The attribute ``name`` of each object as integers (``None`` as -1: ids are >= 0)."""
     return np.fromiter((-1 if (value := getattr(o, name)) is None else value
-                        for o in objects), np.int64, len(objects))
+                        for o in objects), dtype, len(objects))
 
 
 def _optional(value: float) -> float | None:
@@ -100,9 +104,11 @@ class _Columns:
     def _merged(self, blocks: list[dict[str, np.ndarray]]) -> dict[str, np.ndarray]:
         if not blocks:
             return dict(self._empty)
-        merged = {name: np.concatenate([b[name] for b in blocks]) for name in blocks[0]}
-        order = np.argsort(merged["id"], kind="stable")
-        return {name: column[order] for name, column in merged.items()}
+        order = np.argsort(np.concatenate([b["id"] for b in blocks]), kind="stable")
+        merged = {}
+        for name in list(blocks[0]):  # one column at a time: little more than the blocks
+            merged[name] = np.concatenate([b.pop(name) for b in blocks])[order]
+        return merged
 
     def __len__(self) -> int:
         return sum(len(b["id"]) for b in self._blocks)
@@ -120,27 +126,42 @@ class FrontTable(_Columns):
 
     def __init__(self):
         super().__init__({name: np.empty(0) for name in _FRONT_FLOATS}
-                         | {name: np.empty(0, np.int64) for name in (*_FRONT_INTS,
-                                                                    *_FRONT_CODES)})
+                         | {name: np.empty(0, dtype) for name, dtype in _FRONT_INTS.items()}
+                         | {name: np.empty(0, np.int8) for name in _FRONT_CODES})
         self.codes = {name: _Codes() for name in _FRONT_CODES}
         self.history: dict[int, tuple] = {}
-        self.earlier_regions: dict[int, tuple] = {}
+        self._earlier: list[tuple[np.ndarray, np.ndarray, np.ndarray]] = []
 
     def add(self, fronts: list) -> None:
         """Copy ``fronts`` (``Front`` objects that will not change again) into rows."""
         if not fronts:
             return
         block = {name: _floats(fronts, name) for name in _FRONT_FLOATS}
-        block |= {name: _ints(fronts, name) for name in _FRONT_INTS}
+        block |= {name: _ints(fronts, name, dtype) for name, dtype in _FRONT_INTS.items()}
         for name, codes in self.codes.items():
             block[name] = np.fromiter((codes.code(getattr(f, name)) for f in fronts),
-                                      np.int64, len(fronts))
+                                      np.int8, len(fronts))
+        earlier = [(f.id, t, region) for f in fronts for t, region in f.earlier_regions]
+        if earlier:
+            owner, times, regions = zip(*earlier, strict=True)
+            self._earlier.append((np.array(owner, ID), np.array(times),
+                                  np.array(regions, ID)))
         for front in fronts:
             if front.history:
                 self.history[front.id] = tuple(front.history)
-            if front.earlier_regions:
-                self.earlier_regions[front.id] = tuple(front.earlier_regions)
         self._append(block)
+
+    def earlier_regions(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Every front's ``earlier_regions`` as three arrays: the front's id, the time
+        (s) until which the region was on its right and that region's id; in order of
+        the front ids, each front's in time order."""
+        if len(self._earlier) != 1:
+            parts = self._earlier or [(np.empty(0, ID), np.empty(0), np.empty(0, ID))]
+            owner = np.concatenate([p[0] for p in parts])
+            order = np.argsort(owner, kind="stable")
+            self._earlier = [(owner[order], np.concatenate([p[1] for p in parts])[order],
+                              np.concatenate([p[2] for p in parts])[order])]
+        return self._earlier[0]
 
     def count(self, kind: FrontKind) -> int:
         """How many fronts of ``kind`` the table holds."""
@@ -153,10 +174,15 @@ class FrontTable(_Columns):
         """The rows as frozen records, in id order."""
         c = self.columns
         kinds, bonds, sides = (self.codes[name].values for name in _FRONT_CODES)
+        owner, times, regions = self.earlier_regions()
+        bounds = np.searchsorted(owner, c["id"]).tolist() + [len(owner)]
+        times, regions = times.tolist(), regions.tolist()
         rows = zip(*(c[name].tolist() for name in (*_FRONT_FLOATS, *_FRONT_INTS,
                                                   *_FRONT_CODES)), strict=True)
-        for (x0, t0, x1, t1, speed, jump, invariant, front_id, direction, wave, fan,
-             ray_index, ray_count, left, right, lineage, kind, bond, side) in rows:
+        for row, (x0, t0, x1, t1, speed, jump, invariant, front_id, direction, wave, fan,
+                  ray_index, ray_count, left, right, lineage, kind, bond, side) in enumerate(
+                rows):
+            lo, hi = bounds[row], bounds[row + 1]
             yield FrontRecord(
                 id=front_id, kind=kinds[kind], x0=x0, t0=t0, x1=_optional(x1),
                 t1=_optional(t1), speed=speed, direction=direction, jump=jump,
@@ -164,7 +190,8 @@ class FrontTable(_Columns):
                 ray_count=ray_count, invariant=invariant, bond=bonds[bond], side=sides[side],
                 left_region=_optional_int(left), right_region_id=_optional_int(right),
                 history=self.history.get(front_id, ()),
-                earlier_regions=self.earlier_regions.get(front_id, ()), lineage=lineage)
+                earlier_regions=tuple(zip(times[lo:hi], regions[lo:hi], strict=True)),
+                lineage=lineage)
 
     def site_history(self, kind: FrontKind, side: str) -> tuple:
         """The ``(t, kind)`` history of the first front of ``kind`` on ``side``."""
@@ -182,26 +209,18 @@ class FrontTable(_Columns):
         lasted (``t1 < t0``) have none."""
         c = self.columns
         valid = ~(c["t1"] < c["t0"]) & ~np.isnan(c["t1"])
-        counts = valid.astype(np.int64)
-        row_of = {}
-        if self.earlier_regions:
-            row_of = dict(zip(c["id"].tolist(), range(len(c["id"])), strict=True))
-            for front_id, earlier in self.earlier_regions.items():
-                row = row_of[front_id]
-                counts[row] += len(earlier) if valid[row] else 0
+        owner, times, regions = self.earlier_regions()
+        rows = np.searchsorted(c["id"], owner)  # the row of each earlier region's front
+        lasted = valid[rows]
+        rows, times, regions = rows[lasted], times[lasted], regions[lasted]
+        counts = valid.astype(np.int64) + np.bincount(rows, minlength=len(valid))
         row = np.repeat(np.arange(len(counts)), counts)
         start, end = c["t0"][row], c["t1"][row]
         right = c["right_region_id"][row]
+        # the k-th earlier region of a front ends its k-th segment and starts the next
         first = np.cumsum(counts) - counts
-        for front_id, earlier in self.earlier_regions.items():
-            r = row_of[front_id]
-            if not valid[r]:
-                continue
-            k, n = first[r], len(earlier)
-            times = [t for t, _ in earlier]
-            end[k:k + n] = times
-            right[k:k + n] = [region for _, region in earlier]
-            start[k + 1:k + n + 1] = times
+        seg = first[rows] + np.arange(len(rows)) - np.searchsorted(rows, rows)
+        end[seg], right[seg], start[seg + 1] = times, regions, times
         speed = c["speed"][row]
         x0 = np.where(speed == 0.0, c["x0"][row], c["x0"][row] + speed * (start - c["t0"][row]))
         return {"x0": x0, "t0": start, "t1": end, "speed": speed, "right": right,
@@ -228,9 +247,10 @@ class RegionTable(_Columns):
 
     def __init__(self):
         super().__init__({name: np.empty(0) for name in (*_REGION_FLOATS, "jp", "jm")}
-                         | {name: np.empty(0, np.int64) for name in (
-                             *_REGION_INTS, *_REGION_CODES, "in_fan", "n_left", "n_right",
-                             "chain_start")})
+                         | {name: np.empty(0, dtype) for name, dtype in _REGION_INTS.items()}
+                         | {name: np.empty(0, ID) for name in (*_REGION_CODES, "n_left",
+                                                               "n_right")}
+                         | {"in_fan": np.empty(0, bool), "chain_start": np.empty(0, np.int64)})
         self.codes = {"material": _Codes(by_identity=True), "table": _Codes(by_identity=True)}
         self.special_states: dict[int, State] = {}
         self._chains: list[tuple[np.ndarray, np.ndarray]] = []
@@ -245,18 +265,17 @@ class RegionTable(_Columns):
         states = [r.state for r in regions]
         block = {name: _floats(regions, name) for name in ("t_start", "t_end")}
         block |= {name: _floats(states, name) for name in _STATE_FIELDS}
-        block |= {name: _ints(regions, name) for name in _REGION_INTS}
-        block["in_fan"] = np.fromiter((r.in_fan for r in regions), np.int64, n)
+        block |= {name: _ints(regions, name, dtype) for name, dtype in _REGION_INTS.items()}
+        block["in_fan"] = np.fromiter((r.in_fan for r in regions), bool, n)
         for name, codes in self.codes.items():
-            block[name] = np.fromiter((codes.code(getattr(r, name)) for r in regions),
-                                      np.int64, n)
+            block[name] = np.fromiter((codes.code(getattr(r, name)) for r in regions), ID, n)
         invariants = [r.invariants or (math.nan, math.nan) for r in regions]
         block["jp"] = np.fromiter((j[0] for j in invariants), float, n)
         block["jm"] = np.fromiter((j[1] for j in invariants), float, n)
-        block["n_left"] = np.fromiter((len(r.left_points) for r in regions), np.int64, n)
-        block["n_right"] = np.fromiter((len(r.right_points) for r in regions), np.int64, n)
-        block["chain_start"] = self._points + np.cumsum(block["n_left"] + block["n_right"]) \
-            - (block["n_left"] + block["n_right"])
+        block["n_left"] = np.fromiter((len(r.left_points) for r in regions), ID, n)
+        block["n_right"] = np.fromiter((len(r.right_points) for r in regions), ID, n)
+        sizes = block["n_left"].astype(np.int64) + block["n_right"]
+        block["chain_start"] = self._points + np.cumsum(sizes) - sizes
         points = [p for r in regions for p in (*r.left_points, *r.right_points)]
         self._chains.append((np.fromiter((p[0] for p in points), float, len(points)),
                              np.fromiter((p[1] for p in points), float, len(points))))
@@ -344,12 +363,17 @@ class RegionTable(_Columns):
 
 def compact(engine, final: bool = False) -> None:
     """Move the dead fronts and the ended regions of ``engine`` into its tables (all of
-    them, with ``final``, once the run is over) and keep only the others as objects."""
+    them, with ``final``, once the run is over) and keep only the others as objects.
+
+    Nothing but stale queue entries (which test ``alive`` first) refers to a dead front
+    after the event that killed it, so its links are cut."""
     fronts, regions = engine.fronts, engine.regions
     done = [f for f in fronts if final or (not f.alive and f.t1 is not None)]
     ended = [r for r in regions if final or r.t_end is not None]
     engine.front_table.add(done)
     engine.region_table.add(ended)
+    for front in done:  # unlinked, a dead front is freed at once, not by a later full
+        front.prev = front.next = front.region_right = None  # collection of its cycles
     engine.fronts = [] if final else [f for f in fronts if f.alive or f.t1 is None]
     engine.regions = [] if final else [r for r in regions if r.t_end is None]
     engine.compact_at = 2 * len(engine.fronts) + COMPACT_BATCH

@@ -33,11 +33,12 @@ from materials import State, WavediagramError
 
 from . import archive, coalesce, initiation, interactions, outgoing, spall, zones
 from .counters import Counters
+from .event_log import EventLog, EventRecord
 from .fronts import UNKNOWN, Front, Region, inside_fan
 from .kinds import FrontKind, Release
 from .resolution import Resolution, initial_state, resolve
 from .scene import Scene
-from .solution import EventRecord, Solution
+from .solution import Solution
 
 ENTROPY_JUMP_TOLERANCE = 1e-12
 """Entropy contacts whose relative volume jump is below this are rounding, never tracked.
@@ -79,7 +80,7 @@ class Engine:
         self.region_table = archive.RegionTable()
         self.compact_at = archive.COMPACT_BATCH
         self.patches: list = []
-        self.events: list[EventRecord] = []
+        self.events = EventLog()
         self.spalls: list = []
         self.fracture_zones: list = []
         self.planned_fractures: list[float] = []

@@ -34,25 +34,12 @@ from materials import State
 
 from .archive import FrontTable, RegionTable, compact
 from .errors import SceneError
+from .event_log import EventRecord
 from .fronts import UNKNOWN, FrontRecord, RegionRecord
 from .kinds import FrontKind
 from .numbering import region_numbers
 from .units import to_si
 from .windows import window_record
-
-
-@dataclass(frozen=True)
-class EventRecord:
-    """One interaction: time (s), position (m), kind, ids of the fronts in and out;
-    ``nodes`` counts the nodes of a lattice (one event)."""
-
-    t: float
-    x: float
-    kind: str
-    incoming: list
-    outgoing: list
-    site: int | None = None
-    nodes: int = 0
 
 
 @dataclass(frozen=True)
@@ -312,9 +299,8 @@ class Solution:
                          "lineage": np.full(len(patch.seg_id), patch.lineage)}
                 for name in arrays:
                     arrays[name] = np.concatenate([arrays[name], extra[name]])
-            arrays["right"] = arrays["right"].astype(int)
-            arrays["ray"] = arrays["ray"].astype(bool)
-            arrays["lineage"] = arrays["lineage"].astype(int)
+            for name, dtype in (("right", int), ("ray", bool), ("lineage", int)):
+                arrays[name] = arrays[name].astype(dtype, copy=False)
             self._cache["segments"] = arrays
         return self._cache["segments"]
 
