@@ -76,6 +76,18 @@ def _ints(objects, name: str, dtype) -> np.ndarray:
                         for o in objects), dtype, len(objects))
 
 
+ROWS_PER_CHUNK = 4096
+"""Rows turned into Python numbers at a time when records are read one by one."""
+
+
+def _chunked_rows(columns: dict[str, np.ndarray], names: tuple) -> Iterator[tuple]:
+    """The rows of ``columns`` as tuples of Python numbers (in the order of ``names``),
+    converted ``ROWS_PER_CHUNK`` at a time."""
+    for start in range(0, len(columns["id"]), ROWS_PER_CHUNK):
+        stop = start + ROWS_PER_CHUNK
+        yield from zip(*(columns[name][start:stop].tolist() for name in names), strict=True)
+
+
 def _optional(value: float) -> float | None:
     return None if math.isnan(value) else float(value)
 
@@ -177,11 +189,10 @@ class FrontTable(_Columns):
         owner, times, regions = self.earlier_regions()
         bounds = np.searchsorted(owner, c["id"]).tolist() + [len(owner)]
         times, regions = times.tolist(), regions.tolist()
-        rows = zip(*(c[name].tolist() for name in (*_FRONT_FLOATS, *_FRONT_INTS,
-                                                  *_FRONT_CODES)), strict=True)
+        names = (*_FRONT_FLOATS, *_FRONT_INTS, *_FRONT_CODES)
         for row, (x0, t0, x1, t1, speed, jump, invariant, front_id, direction, wave, fan,
                   ray_index, ray_count, left, right, lineage, kind, bond, side) in enumerate(
-                rows):
+                _chunked_rows(c, names)):
             lo, hi = bounds[row], bounds[row + 1]
             yield FrontRecord(
                 id=front_id, kind=kinds[kind], x0=x0, t0=t0, x1=_optional(x1),

@@ -258,18 +258,19 @@ class Solution:
     def fronts(self) -> list[FrontRecord]:
         """Every front as a frozen record (segments inside lattices included)."""
         if "fronts" not in self._cache:
-            self._cache["fronts"] = list(self._front_records())
+            self._cache["fronts"] = list(self.front_records())
         return self._cache["fronts"]
 
     @property
     def regions(self) -> list[RegionRecord]:
         """Every region as a frozen record (cells inside lattices included)."""
         if "regions" not in self._cache:
-            self._cache["regions"] = list(self._region_records())
+            self._cache["regions"] = list(self.region_records())
         return self._cache["regions"]
 
-    def _front_records(self) -> Iterator[FrontRecord]:
-        """The front records one by one (from the cache when it has them)."""
+    def front_records(self) -> Iterator[FrontRecord]:
+        """The front records one by one, made as they are read and not kept (``fronts``
+        keeps them; from its list when it has been read)."""
         if "fronts" in self._cache:
             yield from self._cache["fronts"]
             return
@@ -277,8 +278,9 @@ class Solution:
         for patch in self.patches:
             yield from patch.front_records()
 
-    def _region_records(self) -> Iterator[RegionRecord]:
-        """The region records one by one (from the cache when it has them)."""
+    def region_records(self) -> Iterator[RegionRecord]:
+        """The region records one by one, made as they are read and not kept (``regions``
+        keeps them; from its list when it has been read)."""
         if "regions" in self._cache:
             yield from self._cache["regions"]
             return
@@ -290,35 +292,44 @@ class Solution:
     def _segments(self) -> dict:
         """Front segments as arrays: one per front and per region on its right."""
         if "segments" not in self._cache:
-            arrays = self.front_table.segments()
+            parts = [self.front_table.segments()]
             for patch in self.patches:
-                extra = {"x0": patch.seg_x0, "t0": patch.seg_t0, "t1": patch.seg_t1,
-                         "speed": patch.seg_speed, "right": patch.seg_right,
-                         "ray": np.ones(len(patch.seg_id), bool),
-                         "family": patch.seg_direction, "invariant": patch.seg_invariant,
-                         "lineage": np.full(len(patch.seg_id), patch.lineage)}
-                for name in arrays:
-                    arrays[name] = np.concatenate([arrays[name], extra[name]])
+                parts.append({"x0": patch.seg_x0, "t0": patch.seg_t0, "t1": patch.seg_t1,
+                              "speed": patch.seg_speed, "right": patch.seg_right,
+                              "ray": np.ones(len(patch.seg_id), bool),
+                              "family": patch.seg_direction, "invariant": patch.seg_invariant,
+                              "lineage": np.full(len(patch.seg_id), patch.lineage)})
+            arrays = {name: np.concatenate([part[name] for part in parts])
+                      for name in parts[0]}
             for name, dtype in (("right", int), ("ray", bool), ("lineage", int)):
                 arrays[name] = arrays[name].astype(dtype, copy=False)
             self._cache["segments"] = arrays
         return self._cache["segments"]
 
-    def _cells(self) -> dict:
-        """Where each region id inside a lattice lives: a patch and an index."""
+    def _cells(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Where the cells inside lattices live: their ids in increasing order, and for
+        each its patch (index in ``patches``) and its index in that patch."""
         if "cells" not in self._cache:
-            where = {}
-            for patch in self.patches:
-                for i, rid in enumerate(patch.cell_id.tolist()):
-                    where[rid] = (patch, i)
-            self._cache["cells"] = where
+            ids = np.concatenate([p.cell_id for p in self.patches] or [np.empty(0, int)])
+            patch = np.repeat(np.arange(len(self.patches)),
+                              [len(p.cell_id) for p in self.patches])
+            index = np.concatenate([np.arange(len(p.cell_id)) for p in self.patches]
+                                   or [np.empty(0, int)])
+            order = np.argsort(ids, kind="stable")
+            self._cache["cells"] = ids[order], patch[order], index[order]
         return self._cache["cells"]
 
     def _find(self, region_id: int) -> int | tuple:
         """Where region ``region_id`` lives: its row of ``region_table``, or a lattice
         patch and an index in it."""
         row = self.region_table.row(region_id)
-        return row if row >= 0 else self._cells()[region_id]
+        if row >= 0:
+            return row
+        ids, patch, index = self._cells()
+        k = int(np.searchsorted(ids, region_id))
+        if k == len(ids) or ids[k] != region_id:
+            raise KeyError(region_id)
+        return self.patches[patch[k]], int(index[k])
 
     def _region_state(self, region_id: int) -> State:
         found = self._find(region_id)
@@ -701,8 +712,8 @@ class Solution:
         yield "title", self.scene.title
         yield "t_end", self.scene.t_end
         yield "regions", (_region_entry(r, numbers.get(r.id), polygons)
-                          for r in self._region_records())
-        yield "fronts", map(_front_entry, self._front_records())
+                          for r in self.region_records())
+        yield "fronts", map(_front_entry, self.front_records())
         yield "events", map(_event_entry, self.events)
         yield "spall", [{"x": s.x, "t": s.t, "tension": s.tension, "strength": s.strength,
                          "layer": s.layer, "zone": list(s.zone) if s.zone else None}
