@@ -19,6 +19,8 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterator
+from itertools import chain
+from operator import attrgetter
 
 import numpy as np
 
@@ -44,6 +46,7 @@ _STATE_FIELDS = ("sigma", "u", "v", "e", "plastic_strain")
 _REGION_FLOATS = ("t_start", "t_end", *_STATE_FIELDS)
 _REGION_INTS = {"id": ID, "layer": ID}
 _REGION_CODES = ("material", "table")
+_UNKNOWN_INVARIANTS = (math.nan, math.nan)
 
 
 class _Codes:
@@ -56,24 +59,42 @@ class _Codes:
         self._by_identity = by_identity
 
     def code(self, value) -> int:
-        key = id(value) if self._by_identity else value
-        found = self._index.get(key)
-        if found is None:
-            found = self._index[key] = len(self.values)
-            self.values.append(value)
-        return found
+        """The code of ``value`` (a new one if it is new)."""
+        return int(self.codes([value])[0])
+
+    def codes(self, values: list) -> np.ndarray:
+        """The code of each of ``values`` (new ones numbered as they come)."""
+        index = self._index
+        keys = list(map(id, values)) if self._by_identity else values
+        found = list(map(index.get, keys))
+        for k in [k for k, code in enumerate(found) if code is None]:
+            found[k] = index.get(keys[k])
+            if found[k] is None:
+                found[k] = index[keys[k]] = len(self.values)
+                self.values.append(values[k])
+        return np.fromiter(found, ID, len(found))
 
 
-def _floats(objects, name: str) -> np.ndarray:
-    """The attribute ``name`` of each object as float64 (``None`` as NaN)."""
-    return np.fromiter((math.nan if (value := getattr(o, name)) is None else value
-                        for o in objects), float, len(objects))
+def _column(objects: list, name: str, dtype) -> np.ndarray:
+    """The attribute ``name`` of each object as a column of ``dtype``; ``None`` as NaN in
+    a float column, as -1 in an integer one (ids are >= 0)."""
+    try:
+        return np.fromiter(map(attrgetter(name), objects), dtype, len(objects))
+    except TypeError:  # a None among them
+        missing = math.nan if np.dtype(dtype).kind == "f" else -1
+        return np.array([missing if value is None else value
+                         for value in map(attrgetter(name), objects)], dtype)
 
 
-def _ints(objects, name: str, dtype) -> np.ndarray:
-    """The attribute ``name`` of each object as integers (``None`` as -1: ids are >= 0)."""
-    return np.fromiter((-1 if (value := getattr(o, name)) is None else value
-                        for o in objects), dtype, len(objects))
+def _floats(objects: list, names: tuple) -> dict[str, np.ndarray]:
+    """The attributes ``names`` of each object as float64 columns (``None`` as NaN)."""
+    return {name: _column(objects, name, float) for name in names}
+
+
+def _ints(objects: list, dtypes: dict) -> dict[str, np.ndarray]:
+    """The attributes named in ``dtypes`` of each object as integer columns of those
+    types (``None`` as -1)."""
+    return {name: _column(objects, name, dtype) for name, dtype in dtypes.items()}
 
 
 ROWS_PER_CHUNK = 4096
@@ -140,7 +161,8 @@ class FrontTable(_Columns):
         super().__init__({name: np.empty(0) for name in _FRONT_FLOATS}
                          | {name: np.empty(0, dtype) for name, dtype in _FRONT_INTS.items()}
                          | {name: np.empty(0, np.int8) for name in _FRONT_CODES})
-        self.codes = {name: _Codes() for name in _FRONT_CODES}
+        # kinds are enum members (hashed in Python): told apart by identity
+        self.codes = {name: _Codes(by_identity=name == "kind") for name in _FRONT_CODES}
         self.history: dict[int, tuple] = {}
         self._earlier: list[tuple[np.ndarray, np.ndarray, np.ndarray]] = []
 
@@ -148,19 +170,16 @@ class FrontTable(_Columns):
         """Copy ``fronts`` (``Front`` objects that will not change again) into rows."""
         if not fronts:
             return
-        block = {name: _floats(fronts, name) for name in _FRONT_FLOATS}
-        block |= {name: _ints(fronts, name, dtype) for name, dtype in _FRONT_INTS.items()}
+        block = _floats(fronts, _FRONT_FLOATS) | _ints(fronts, _FRONT_INTS)
         for name, codes in self.codes.items():
-            block[name] = np.fromiter((codes.code(getattr(f, name)) for f in fronts),
-                                      np.int8, len(fronts))
-        earlier = [(f.id, t, region) for f in fronts for t, region in f.earlier_regions]
+            block[name] = codes.codes(list(map(attrgetter(name), fronts))).astype(np.int8)
+        earlier = [(f.id, t, region) for f in fronts if f.earlier_regions
+                   for t, region in f.earlier_regions]
         if earlier:
             owner, times, regions = zip(*earlier, strict=True)
             self._earlier.append((np.array(owner, ID), np.array(times),
                                   np.array(regions, ID)))
-        for front in fronts:
-            if front.history:
-                self.history[front.id] = tuple(front.history)
+        self.history.update((f.id, tuple(f.history)) for f in fronts if f.history)
         self._append(block)
 
     def earlier_regions(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -273,27 +292,28 @@ class RegionTable(_Columns):
         if not regions:
             return
         n = len(regions)
-        states = [r.state for r in regions]
-        block = {name: _floats(regions, name) for name in ("t_start", "t_end")}
-        block |= {name: _floats(states, name) for name in _STATE_FIELDS}
-        block |= {name: _ints(regions, name, dtype) for name, dtype in _REGION_INTS.items()}
-        block["in_fan"] = np.fromiter((r.in_fan for r in regions), bool, n)
+        states = list(map(attrgetter("state"), regions))
+        block = _floats(regions, ("t_start", "t_end")) | _floats(states, _STATE_FIELDS)
+        block |= _ints(regions, _REGION_INTS)
+        block["in_fan"] = _column(regions, "in_fan", bool)
         for name, codes in self.codes.items():
-            block[name] = np.fromiter((codes.code(getattr(r, name)) for r in regions), ID, n)
-        invariants = [r.invariants or (math.nan, math.nan) for r in regions]
-        block["jp"] = np.fromiter((j[0] for j in invariants), float, n)
-        block["jm"] = np.fromiter((j[1] for j in invariants), float, n)
-        block["n_left"] = np.fromiter((len(r.left_points) for r in regions), ID, n)
-        block["n_right"] = np.fromiter((len(r.right_points) for r in regions), ID, n)
+            block[name] = codes.codes(list(map(attrgetter(name), regions)))
+        invariants = np.array([r.invariants or _UNKNOWN_INVARIANTS for r in regions],
+                              dtype=float).reshape(n, 2)
+        block["jp"], block["jm"] = invariants[:, 0].copy(), invariants[:, 1].copy()
+        lefts = list(map(attrgetter("left_points"), regions))
+        rights = list(map(attrgetter("right_points"), regions))
+        block["n_left"] = np.fromiter(map(len, lefts), ID, n)
+        block["n_right"] = np.fromiter(map(len, rights), ID, n)
         sizes = block["n_left"].astype(np.int64) + block["n_right"]
         block["chain_start"] = self._points + np.cumsum(sizes) - sizes
-        points = [p for r in regions for p in (*r.left_points, *r.right_points)]
-        self._chains.append((np.fromiter((p[0] for p in points), float, len(points)),
-                             np.fromiter((p[1] for p in points), float, len(points))))
+        chains = chain.from_iterable(zip(lefts, rights, strict=True))  # left, right, ...
+        points = np.fromiter(chain.from_iterable(chain.from_iterable(chains)), float,
+                             2 * int(sizes.sum())).reshape(-1, 2)
+        self._chains.append((points[:, 0].copy(), points[:, 1].copy()))
         self._points += len(points)
-        for region in regions:
-            if type(region.state) is not State:
-                self.special_states[region.id] = region.state
+        self.special_states.update((r.id, r.state) for r in regions
+                                   if type(r.state) is not State)
         self._append(block)
         self._row_of = None
 

@@ -121,8 +121,10 @@ def test_json_writing_shows_its_progress(tmp_path, capsys):
                      'velocity = "300 m/s"\n[[layer]]\nmaterial = "Al2024"\n'
                      'thickness = "2 mm"\nbond = "unbonded"\n')
     out = tmp_path / "solution.json"
-    assert main(["run", str(scene), "--json", str(out)]) == 0
-    lines = capsys.readouterr().err.splitlines()
+    code = main(["run", str(scene), "--json", str(out)])
+    err = capsys.readouterr().err
+    assert code == 0, err
+    lines = err.splitlines()
     document = json.loads(out.read_text())
     total = sum(len(document[key]) for key in ("regions", "fronts", "events"))
     assert f"  writing {out}: 100 % of {total} records" in lines
