@@ -6,16 +6,17 @@ twice during the run and once at its end.  What the diagram, the records and the
 need, per event of this scene:
 
 - 1.94 fronts of 92 B of columns (7 floats, 8 int32, 4 int8): 178 B;
-- 1.27 regions of 105 B of columns and about 6 chain points of 16 B: 255 B;
-- the event: 57 B of packed arrays and 8 B per front id in and out (about 4): 89 B;
-- the query segments the balance cached (``Solution._segments``), 2.3 of 58 B: 133 B;
+- 1.27 regions of 105 B of columns and 6.3 chain points of 16 B: 262 B;
+- the event: 49 B of packed arrays and 8 B for each of its 3.0 front ids: 73 B;
+- the query segments the balance cached (``Solution._segments``), 2.5 of 58 B: 145 B;
 
-about 650 B, against 2 300 B when the engine's objects were kept.  The bound, 1 000 B,
-leaves room for what does not grow with the events (isentrope tables, counters, the
-scene) and fails if the fronts or the regions are kept as objects (each alone about
-1 200 B per event).  Writing the JSON streams it: its peak above what the solution holds
-stays within the same bound (it was 2 300 B per event when every region's record and
-polygon were built first to number them).
+about 660 B (685 B measured, with what does not grow with the events: isentrope
+tables, counters, the scene), against 2 300 B when the engine's objects were kept: the
+fronts as objects took 830 B per event, the regions 600 B, the event records 390 B.  The
+bound, 850 B, fails if any of the three is kept as objects again.  Writing the JSON
+streams it: its peak above what the solution holds stays within the same bound (it was
+2 300 B per event when every region's record and polygon were built first to number
+them).
 """
 
 from __future__ import annotations
@@ -33,7 +34,7 @@ from fronttrack.kinds import EventKind
 STEEL = ft.material("Davison steel", model="elastic-plastic", rho0="7870 kg/m3",
                     **{"lambda": "123.1 GPa"}, mu="79.29 GPa", yield_strength="1 GPa")
 
-BYTES_PER_EVENT = 1000
+BYTES_PER_EVENT = 850
 """Bound on the memory a solution keeps per event, and on the JSON writer's peak above
 it (see the module docstring)."""
 
