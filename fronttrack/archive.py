@@ -2,14 +2,14 @@
 
 A long run makes about two fronts and one region per event.  As the engine's objects
 (``fronttrack.fronts.Front``, with its links and lists, and ``Region``, with its lists of
-``(X, t)`` vertex tuples and its ``State``) they cost about 2 kB per event, and a run of
+``(X, t)`` vertex tuples and its ``State``) they cost about 1.4 kB per event, and a run of
 10^5 events would hold hundreds of megabytes.  Once a front has died and a region has
 ended nothing in the engine changes them again, and the diagram, the records and the
 outputs need only their numbers: ``compact`` moves them into a ``FrontTable`` and a
-``RegionTable`` (8-byte floats and integers, a front in about 130 B, a region with its
-polygon in about 170 B) and the engine drops the objects.  The engine compacts whenever
-its lists of objects have doubled since the last time, and once more at the end: a
-``Solution`` reads only the tables.
+``RegionTable`` (float64, int32 and int8 columns: a front in 92 B, a region in 105 B and
+16 B per vertex of its polygon) and the engine drops the objects.  The engine compacts
+whenever it holds ``COMPACT_BATCH`` front objects more than twice the ones it kept last
+time, and once more at the end: a ``Solution`` reads only the tables.
 
 Rows are kept in the order of the ids (the order in which the engine made the objects),
 so records come out in the order they always had.
@@ -31,8 +31,9 @@ from .kinds import FrontKind
 
 COMPACT_BATCH = 4096
 """The engine compacts when it holds this many front objects more than twice the number
-it kept after its last compaction (the live ones): each object is copied once, and the
-copying costs a few per cent of the time the engine took to make it."""
+it kept after its last compaction (the live ones): each object is copied once, which
+costs about a tenth of the time the engine took to make it (``benchmarks/MEMORY.md``),
+and the objects waiting to be copied stay a few megabytes."""
 
 ID = np.int32
 """Ids and counts: an id numbers an object the engine made, far below 2^31 in any run
