@@ -295,7 +295,7 @@ def _json_progress(path: Path):
 
     def progress(done: int, total: int) -> None:
         print(f"{start}  writing {path}: {100 * done // max(total, 1)} % of {total} records",
-              end=end, file=sys.stderr, flush=True)
+              end=end if done < total else "\n", file=sys.stderr, flush=True)
 
     return progress
 

@@ -32,6 +32,7 @@ from characteristics.isentrope import IsentropeTables
 from materials import State, WavediagramError
 
 from . import (
+    archive,
     cluster,
     coalesce,
     initiation,
@@ -44,11 +45,12 @@ from . import (
     zones,
 )
 from .counters import Counters
+from .event_log import EventLog, EventRecord
 from .fronts import UNKNOWN, Front, Region, inside_fan
 from .kinds import FrontKind, Release
 from .resolution import Resolution, initial_state, resolve
 from .scene import Scene
-from .solution import EventRecord, Solution
+from .solution import Solution
 
 ENTROPY_JUMP_TOLERANCE = 1e-12
 """Entropy contacts whose relative volume jump is below this are rounding, never tracked.
@@ -84,10 +86,13 @@ class Engine:
         self._wave_ids = itertools.count()
         self._seq = itertools.count()
         self._heap: list = []
-        self.fronts: list[Front] = []
+        self.fronts: list[Front] = []  # objects not yet compacted (fronttrack.archive)
         self.regions: list[Region] = []
+        self.front_table = archive.FrontTable()
+        self.region_table = archive.RegionTable()
+        self.compact_at = archive.COMPACT_BATCH
         self.patches: list = []
-        self.events: list[EventRecord] = []
+        self.events = EventLog()
         self.spalls: list = []
         self.fracture_zones: list = []
         self.planned_fractures: list[float] = []
@@ -336,6 +341,8 @@ class Engine:
                 mismatch.count_resolved(self)
             self._process(seed, t, x, timer=kind == "site")
             self.keep_weak_waves = False
+            if len(self.fronts) >= self.compact_at:
+                archive.compact(self)
             if self.progress is not None and counters.events % 1000 == 0:
                 self.progress(counters.events, t)
         self._finish()

@@ -25,7 +25,7 @@ def fit_warnings(solution) -> list[str]:
     """One line for each material whose states went beyond its fitted range."""
     # the engine's regions and the lattices' cell volumes, read without building a
     # record per cell (a large run holds ~1e5 of them)
-    pieces = [(r.material, r.state.v) for r in solution.engine_regions]
+    pieces = solution.region_table.densest()
     pieces += [(p.material, float(p.cell_v.min())) for p in solution.patches if len(p.cell_v)]
     densest = {}
     for material, v in pieces:

@@ -12,7 +12,8 @@ carries its own Riemann invariant (``invariant``: ``J+`` for a right-going ray,
 constant at the state of its middle, and ``Region.table`` is the isentrope they lie
 on (``characteristics.isentrope``).  Contacts, gaps and boundaries are vertical in X–t.
 
-The engine's ``Front`` and ``Region`` are mutable and linked; a ``Solution`` hands out
+The engine's ``Front`` and ``Region`` are mutable and linked; once finished they are
+copied into columns (``fronttrack.archive``), from which a ``Solution`` hands out
 ``FrontRecord`` and ``RegionRecord``, frozen and without links.
 """
 
@@ -54,10 +55,6 @@ class Region:
     in_fan: bool = False
     table: object = UNKNOWN
     invariants: tuple | None = None
-
-    def polygon(self) -> list[tuple[float, float]]:
-        """Closed boundary as ``(X, t)`` vertices (m, s), counter-clockwise."""
-        return polygon_of(self.left_points, self.right_points)
 
 
 def polygon_of(left_points, right_points) -> list[tuple[float, float]]:
@@ -134,17 +131,6 @@ class Front:
             return self.x0
         return self.x0 + self.speed * (t - self.t0)
 
-    def record(self) -> FrontRecord:
-        """The finished front as a frozen record."""
-        return FrontRecord(
-            id=self.id, kind=self.kind, x0=self.x0, t0=self.t0, x1=self.x1, t1=self.t1,
-            speed=self.speed, direction=self.direction, jump=self.jump, wave=self.wave,
-            fan=self.fan, ray_index=self.ray_index, ray_count=self.ray_count,
-            invariant=self.invariant, bond=self.bond, side=self.side,
-            left_region=self.left_region, right_region_id=self.right_region_id,
-            history=tuple(self.history), earlier_regions=tuple(self.earlier_regions),
-            lineage=self.lineage)
-
 
 @dataclass(frozen=True, slots=True)
 class FrontRecord:
@@ -212,13 +198,6 @@ class RegionRecord:
     def polygon(self) -> list[tuple[float, float]]:
         """Closed boundary as ``(X, t)`` vertices (m, s), counter-clockwise."""
         return list(self.vertices)
-
-    @classmethod
-    def of(cls, region: Region) -> RegionRecord:
-        return cls(id=region.id, state=region.state, material=region.material,
-                   layer=region.layer, t_start=region.t_start, t_end=region.t_end,
-                   in_fan=region.in_fan, vertices=tuple(region.polygon()),
-                   birth=region.left_points[0] if region.left_points else None)
 
 
 def inside_fan(left: Front, right: Front) -> bool:

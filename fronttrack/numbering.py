@@ -122,22 +122,28 @@ def region_numbers(solution, page: tuple[float, float] = STANDARD_PAGE,
     (x_lo, x_hi), (t_lo, t_hi) = xt_limits(solution.scene)
     scale = np.array([page[0] / (x_hi - x_lo) * 1e3, page[1] / (t_hi - t_lo) * 1e6])
     origin = np.array([x_lo * 1e-3, t_lo * 1e-6])
+    # what decides whether a number fits, kept per region instead of its polygon: the
+    # narrower extent of the polygon on the page and its clearance (both in pt)
+    smallest = label_radius("99", fontsize)
     candidates = []
-    for region in solution.regions:
+    for region in solution.region_records():
         if region.in_fan or len(region.vertices) < 3:
             continue
         vertices = np.asarray(region.vertices, dtype=float)
         if not np.all(np.isfinite(vertices)):
             continue
-        candidates.append((region.id, vertices, (vertices - origin) * scale))
+        on_page = (vertices - origin) * scale
+        extent = float(np.ptp(on_page, axis=0).min())
+        if extent >= 2.0 * smallest:
+            candidates.append((region.id, _reading_key(vertices), extent,
+                               _clearance(on_page)))
     digits = 2
     while True:
         radius = label_radius("9" * digits, fontsize)
-        shown = [(region_id, vertices) for region_id, vertices, on_page in candidates
-                 if np.all(np.ptp(on_page, axis=0) >= 2.0 * radius)
-                 and _clearance(on_page) >= radius]
+        shown = [(region_id, key) for region_id, key, extent, clearance in candidates
+                 if extent >= 2.0 * radius and clearance >= radius]
         if len(str(len(shown))) <= digits:
             break
         digits += 1
-    order = sorted(shown, key=lambda item: (*_reading_key(item[1]), item[0]))
+    order = sorted(shown, key=lambda item: (*item[1], item[0]))
     return {region_id: number for number, (region_id, _) in enumerate(order, start=1)}

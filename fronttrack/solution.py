@@ -32,26 +32,14 @@ import numpy as np
 from characteristics.reconstruct import Cell, Crossing, knots
 from materials import State
 
+from .archive import FrontTable, RegionTable, compact
 from .errors import SceneError
+from .event_log import EventRecord
 from .fronts import UNKNOWN, FrontRecord, RegionRecord
 from .kinds import FrontKind
 from .numbering import region_numbers
 from .units import to_si
 from .windows import window_record
-
-
-@dataclass(frozen=True)
-class EventRecord:
-    """One interaction: time (s), position (m), kind, ids of the fronts in and out;
-    ``nodes`` counts the nodes of a lattice (one event)."""
-
-    t: float
-    x: float
-    kind: str
-    incoming: list
-    outgoing: list
-    site: int | None = None
-    nodes: int = 0
 
 
 @dataclass(frozen=True)
@@ -193,11 +181,16 @@ def _history(coords, states, stop: float, start: float = 0.0) -> History:
 
 @dataclass
 class Solution:
-    """The front-tracking solution of one scene."""
+    """The front-tracking solution of one scene.
+
+    The fronts and regions the engine made are held as columns (``front_table``,
+    ``region_table``: ``fronttrack.archive``), the interiors of lattices as ``patches``;
+    records are made from them when asked for.
+    """
 
     scene: object
-    engine_fronts: list
-    engine_regions: list
+    front_table: FrontTable
+    region_table: RegionTable
     patches: list
     events: list
     spalls: list
@@ -213,19 +206,20 @@ class Solution:
     @classmethod
     def from_engine(cls, engine, elapsed: float) -> Solution:
         counters = engine.counters
-        rays = sum(f.kind == FrontKind.RAY for f in engine.fronts) + sum(
-            len(p.seg_id) for p in engine.patches)
+        compact(engine, final=True)
+        fronts, regions = engine.front_table, engine.region_table
+        rays = fronts.count(FrontKind.RAY) + sum(len(p.seg_id) for p in engine.patches)
         stats = {
             "events": len(engine.events),
             "lattices": counters.lattices,
             "lattice_nodes": counters.nodes,
             "riemann_solves": counters.riemann_solves,
             "isentrope_tables": engine.tables.built,
-            "fronts": len(engine.fronts) + sum(len(p.seg_id) for p in engine.patches),
-            "regions": len(engine.regions) + sum(len(p.cell_id) for p in engine.patches),
+            "fronts": len(fronts) + sum(len(p.seg_id) for p in engine.patches),
+            "regions": len(regions) + sum(len(p.cell_id) for p in engine.patches),
             "rays": rays,
-            "shocks": sum(f.kind == FrontKind.SHOCK for f in engine.fronts),
-            "contacts": sum(f.kind == FrontKind.CONTACT for f in engine.fronts),
+            "shocks": fronts.count(FrontKind.SHOCK),
+            "contacts": fronts.count(FrontKind.CONTACT),
             "solve_time": elapsed,
         }
         if engine.stopped is not None:
@@ -257,8 +251,8 @@ class Solution:
             "suppressed_spalls": counters.suppressed_spalls,
             "largest_suppressed_tension": counters.suppressed_tension,
         } | engine.mismatches.report()
-        return cls(scene=engine.scene, engine_fronts=engine.fronts,
-                   engine_regions=engine.regions, patches=engine.patches,
+        return cls(scene=engine.scene, front_table=fronts, region_table=regions,
+                   patches=engine.patches,
                    events=engine.events, spalls=engine.spalls, stats=stats,
                    accuracy_report=report, min_stress=engine.min_stress,
                    initial_states=engine.initial_states, counters=counters,
@@ -269,31 +263,33 @@ class Solution:
     def fronts(self) -> list[FrontRecord]:
         """Every front as a frozen record (segments inside lattices included)."""
         if "fronts" not in self._cache:
-            self._cache["fronts"] = list(self._front_records())
+            self._cache["fronts"] = list(self.front_records())
         return self._cache["fronts"]
 
     @property
     def regions(self) -> list[RegionRecord]:
         """Every region as a frozen record (cells inside lattices included)."""
         if "regions" not in self._cache:
-            self._cache["regions"] = list(self._region_records())
+            self._cache["regions"] = list(self.region_records())
         return self._cache["regions"]
 
-    def _front_records(self) -> Iterator[FrontRecord]:
-        """The front records one by one (from the cache when it has them)."""
+    def front_records(self) -> Iterator[FrontRecord]:
+        """The front records one by one, made as they are read and not kept (``fronts``
+        keeps them; from its list when it has been read)."""
         if "fronts" in self._cache:
             yield from self._cache["fronts"]
             return
-        yield from (f.record() for f in self.engine_fronts)
+        yield from self.front_table.records()
         for patch in self.patches:
             yield from patch.front_records()
 
-    def _region_records(self) -> Iterator[RegionRecord]:
-        """The region records one by one (from the cache when it has them)."""
+    def region_records(self) -> Iterator[RegionRecord]:
+        """The region records one by one, made as they are read and not kept (``regions``
+        keeps them; from its list when it has been read)."""
         if "regions" in self._cache:
             yield from self._cache["regions"]
             return
-        yield from (RegionRecord.of(r) for r in self.engine_regions)
+        yield from self.region_table.records()
         for patch in self.patches:
             yield from patch.region_records()
 
@@ -301,86 +297,83 @@ class Solution:
     def _segments(self) -> dict:
         """Front segments as arrays: one per front and per region on its right."""
         if "segments" not in self._cache:
-            names = ("x0", "t0", "t1", "speed", "right", "ray", "family", "invariant",
-                     "lineage")
-            rows = []
-            for f in self.engine_fronts:
-                if f.t1 is None or f.t1 < f.t0:
-                    continue
-                is_ray = f.kind == FrontKind.RAY
-                if not f.earlier_regions:  # one segment (most fronts)
-                    region = f.right_region_id
-                    rows.append((f.x0, f.t0, f.t1, f.speed, -1 if region is None else region,
-                                 is_ray, f.direction, f.invariant, f.lineage))
-                    continue
-                start = f.t0
-                for end, region in [*f.earlier_regions, (f.t1, f.right_region_id)]:
-                    rows.append((f.position(start), start, end, f.speed,
-                                 -1 if region is None else region, is_ray, f.direction,
-                                 f.invariant, f.lineage))
-                    start = end
-            # one conversion of the whole table (ids, flags and families are exact floats)
-            table = np.array(rows, dtype=float).reshape(-1, len(names))
-            arrays = {name: np.ascontiguousarray(table[:, k]) for k, name in enumerate(names)}
+            parts = [self.front_table.segments()]
             for patch in self.patches:
-                extra = {"x0": patch.seg_x0, "t0": patch.seg_t0, "t1": patch.seg_t1,
-                         "speed": patch.seg_speed, "right": patch.seg_right,
-                         "ray": np.ones(len(patch.seg_id), bool),
-                         "family": patch.seg_direction, "invariant": patch.seg_invariant,
-                         "lineage": np.full(len(patch.seg_id), patch.lineage)}
-                for name in arrays:
-                    arrays[name] = np.concatenate([arrays[name], extra[name]])
-            arrays["right"] = arrays["right"].astype(int)
-            arrays["ray"] = arrays["ray"].astype(bool)
-            arrays["family"] = arrays["family"].astype(int)
-            arrays["lineage"] = arrays["lineage"].astype(int)
+                parts.append({"x0": patch.seg_x0, "t0": patch.seg_t0, "t1": patch.seg_t1,
+                              "speed": patch.seg_speed, "right": patch.seg_right,
+                              "ray": np.ones(len(patch.seg_id), bool),
+                              "family": patch.seg_direction, "invariant": patch.seg_invariant,
+                              "lineage": np.full(len(patch.seg_id), patch.lineage)})
+            arrays = {name: np.concatenate([part[name] for part in parts])
+                      for name in parts[0]}
+            for name, dtype in (("right", int), ("ray", bool), ("lineage", int)):
+                arrays[name] = arrays[name].astype(dtype, copy=False)
             self._cache["segments"] = arrays
         return self._cache["segments"]
 
-    def _cells(self) -> dict:
-        """Where each region id lives: an engine region, or a patch and an index."""
+    def _cells(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Where the cells inside lattices live: their ids in increasing order, and for
+        each its patch (index in ``patches``) and its index in that patch."""
         if "cells" not in self._cache:
-            where = {r.id: r for r in self.engine_regions}
-            for patch in self.patches:
-                for i, rid in enumerate(patch.cell_id.tolist()):
-                    where[rid] = (patch, i)
-            self._cache["cells"] = where
+            ids = np.concatenate([p.cell_id for p in self.patches] or [np.empty(0, int)])
+            patch = np.repeat(np.arange(len(self.patches)),
+                              [len(p.cell_id) for p in self.patches])
+            index = np.concatenate([np.arange(len(p.cell_id)) for p in self.patches]
+                                   or [np.empty(0, int)])
+            order = np.argsort(ids, kind="stable")
+            self._cache["cells"] = ids[order], patch[order], index[order]
         return self._cache["cells"]
 
+    def _find(self, region_id: int) -> int | tuple:
+        """Where region ``region_id`` lives: its row of ``region_table``, or a lattice
+        patch and an index in it."""
+        row = self.region_table.row(region_id)
+        if row >= 0:
+            return row
+        ids, patch, index = self._cells()
+        k = int(np.searchsorted(ids, region_id))
+        if k == len(ids) or ids[k] != region_id:
+            raise KeyError(region_id)
+        return self.patches[patch[k]], int(index[k])
+
     def _region_state(self, region_id: int) -> State:
-        found = self._cells()[region_id]
-        return found.state if not isinstance(found, tuple) else found[0].state(found[1])
+        found = self._find(region_id)
+        return self.region_table.state(found) if not isinstance(found, tuple) else \
+            found[0].state(found[1])
 
     def _region_cell(self, region_id: int) -> Cell:
         """A region as the reconstruction sees it: its state, table and invariants."""
-        found = self._cells()[region_id]
+        found = self._find(region_id)
         if isinstance(found, tuple):
             patch, i = found
             table = patch.table
             state = patch.state(i)
             return Cell(state, table, table.invariants(state) if table is not None else None)
-        table = found.table
+        regions = self.region_table
+        state, table = regions.state(found), regions.table(found)
         if table is UNKNOWN:
-            table = (self.tables.table(found.material, found.state)
+            table = (self.tables.table(regions.material(found), state)
                      if self.tables is not None and self.accuracy_report.get(
                          "release", "isentrope") == "isentrope" else None)
-            found.table = table
+            regions.set_table(found, table)
         if table is None:
-            return Cell(found.state)
-        if found.invariants is None:
-            found.invariants = table.invariants(found.state)
-        return Cell(found.state, table, found.invariants)
+            return Cell(state)
+        invariants = regions.invariants(found)
+        if invariants is None:
+            invariants = table.invariants(state)
+            regions.set_invariants(found, invariants)
+        return Cell(state, table, invariants)
 
     def region_record(self, region_id: int) -> RegionRecord:
         """The frozen record of region ``region_id``."""
-        found = self._cells()[region_id]
+        found = self._find(region_id)
         if isinstance(found, tuple):
             patch, i = found
             return RegionRecord(id=region_id, state=patch.state(i), material=patch.material,
                                 layer=int(patch.layers[i]), t_start=float(patch.cell_t0[i]),
                                 t_end=float(patch.cell_t1[i]), in_fan=True,
                                 vertices=tuple(patch.polygon(i)), birth=patch.birth(i))
-        return RegionRecord.of(found)
+        return self.region_table.record(found)
 
     def _spatial_order(self, index: np.ndarray, pos: np.ndarray, t: float) -> np.ndarray:
         """Order (left to right at time ``t``) of the front segments ``index``.
@@ -531,10 +524,8 @@ class Solution:
     def _piston_gaps(self, side: str) -> list[tuple[float, float]]:
         """The ``(t_open, t_close)`` intervals (s) during which a piston boundary was apart
         from its face (``fronttrack.interactions._piston``)."""
-        boundary = next(f for f in self.engine_fronts
-                        if f.kind == FrontKind.BOUNDARY and f.side == side)
         intervals, opened = [], None
-        for t, kind in boundary.history:
+        for t, kind in self.front_table.site_history(FrontKind.BOUNDARY, side):
             if kind == FrontKind.GAP:
                 opened = t
             elif opened is not None:
@@ -652,9 +643,7 @@ class Solution:
         for x0, x1, rid in self._cell_ids_at(0.0):
             if x0 >= x:
                 break
-            found = self._cells()[rid]
-            material = found.material if not isinstance(found, tuple) else found[0].material
-            total += (min(x1, x) - x0) * self._region_state(rid).v / material.v0
+            total += (min(x1, x) - x0) * self._region_state(rid).v / self._material_of(rid).v0
         return total
 
     def max_tension(self) -> dict | None:
@@ -719,8 +708,9 @@ class Solution:
         }
 
     def _material_of(self, region_id: int):
-        found = self._cells()[region_id]
-        return found.material if not isinstance(found, tuple) else found[0].material
+        found = self._find(region_id)
+        return self.region_table.material(found) if not isinstance(found, tuple) else \
+            found[0].material
 
     # --- export -------------------------------------------------------------------------
     def to_dict(self, probes: bool = True, polygons: bool = True) -> dict:
@@ -765,8 +755,8 @@ class Solution:
         yield "title", self.scene.title
         yield "t_end", self.scene.t_end
         yield "regions", (_region_entry(r, numbers.get(r.id), polygons)
-                          for r in self._region_records())
-        yield "fronts", map(_front_entry, self._front_records())
+                          for r in self.region_records())
+        yield "fronts", map(_front_entry, self.front_records())
         yield "events", map(_event_entry, self.events)
         yield "spall", [{"x": s.x, "t": s.t, "tension": s.tension, "strength": s.strength,
                          "layer": s.layer, "zone": list(s.zone) if s.zone else None}

@@ -562,7 +562,7 @@ def test_engine_rear_free_surface_history():
 def test_engine_event_log_has_split_waves():
     """The impact emits four fronts: two precursors at C0 and two plastic shocks at CB."""
     engine = Engine(_impact_scene(0.1e-6))
-    engine.run()
-    impact = next(e for e in engine.events if e.kind == "impact")
-    speeds = sorted(f.speed for f in engine.fronts if f.id in impact.outgoing)
+    solution = engine.run()
+    impact = next(e for e in solution.events if e.kind == "impact")
+    speeds = sorted(f.speed for f in solution.fronts if f.id in impact.outgoing)
     assert speeds == [-STEEL.C0, -STEEL.CB, STEEL.CB, STEEL.C0]
