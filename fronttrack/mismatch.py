@@ -22,10 +22,9 @@ reaching the site before then solves it anyway, and the mismatch is settled at t
 impulse it actually made.  The impulse all mismatches made is reported
 (``accuracy["mismatch_impulse"]``, relative to the budget's momentum content).
 Mismatches pending at once may together make more than what was left (each draws on
-the same remainder), by at most the number pending over ``SHARES`` of it.  The
-campaign's foam (a 200 µm plate, ``tests/test_mismatch.py``): momentum 9.7e-4 and
-energy +0.21 % created without deadlines, 3.6e-5 and +0.027 % with them, for 1 % more
-events.
+the same remainder), by at most the number pending over ``SHARES`` of it.  A foam
+striking a 200 µm plate (``tests/test_mismatch.py``) created 0.21 % of its energy
+without deadlines and balances it to 6e-5 with them.
 
 A wave dropped inside a material (two waves crossing there) would have run to the next
 front on its side; where that front is a site, the mismatch is the site's (added to any

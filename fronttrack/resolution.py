@@ -188,14 +188,10 @@ def resolve(scene: Scene, states: list[State]) -> Resolution:
     negligible = _negligible(scene, scale, step, makes_fans)
     velocity_ratio = max(velocity_jump, scale / _softest_solid(scene, states, impedance)
                          ) / scale  # (m/s) per Pa
-    # a dropped wave may carry no more velocity than a negligible one in the stiffest
-    # layer (the velocity tolerance's own impedance), or than the scene's velocity jumps
-    # scaled: in a soft layer a wave of negligible stress is a large velocity jump
-    negligible_ratio = max(velocity_jump / scale, 1.0 / impedance)
     length = scene.length
     return Resolution(stress_scale=scale, step=step, step_rule=rule,
                       velocity_step=step * velocity_ratio,
-                      negligible_velocity=negligible * negligible_ratio,
+                      negligible_velocity=negligible * velocity_ratio,
                       stress_tolerance=stress_tol, velocity_tolerance=velocity_tol,
                       negligible=negligible, length=length, x_tol=1e-10 * length,
                       release=release, makes_fans=makes_fans, record_constant=constant,

@@ -5,8 +5,8 @@ The reproduction (from campaign seed 78): a slow foam strikes a thin plate at re
 an impact elsewhere in the stack sets a stress scale whose negligible stress (71 MPa)
 is above the wave the foam sends into the plate.  Before, that wave was dropped: the
 foam pushed on a plate that never moved, and nothing came to the contact to solve it
-again.  The momentum balance drifted at the dropped stress (1e-3 of the content in
-1 us) and the run created energy beyond its promise (+0.21 % against 0.2 %).
+again.  The run created energy beyond its promise (+0.21 % against 0.2 %); with the
+deadlines it balances energy to 6e-5.
 """
 
 import fronttrack as ft
@@ -32,14 +32,13 @@ def test_a_mismatch_no_wave_clears_is_solved_again_within_its_budget(monkeypatch
     # the impulse all mismatches made stays within their budget (each of the pending
     # ones draws on what is left: at most 1 + pending / SHARES of it)
     assert 0.0 < report["mismatch_impulse"] <= 1.5 * mismatch.BUDGET * promised
-    assert balance["momentum_error"] <= mismatch.BUDGET * promised
-    assert balance["energy_error"] <= promised  # no energy created beyond the promise
-    assert report["warnings"] == []
-    # the deadlines are what keeps the balance: without them the dropped wave's
-    # mismatch acts for the whole run, and energy is created beyond the promise
+    assert balance["momentum_error"] <= promised
+    assert abs(balance["energy_error"]) <= 0.1 * promised
+    # the deadlines are what keeps the balance: without them the dropped waves'
+    # mismatches act for the whole run, and energy is created beyond the promise
     monkeypatch.setattr(mismatch, "_note", lambda *args: None)
     drifting = ft.run(_foam_on_a_thin_plate()).accuracy_report["balance"]
-    assert drifting["momentum_error"] > 10.0 * balance["momentum_error"]
+    assert drifting["energy_error"] > 10.0 * abs(balance["energy_error"])
     assert drifting["energy_error"] > promised
 
 
