@@ -66,7 +66,7 @@ def test_failing_point_is_a_row_with_its_error(tmp_path):
                      backend="serial")
     good, bad = table.rows
     assert good["error"] is None and good["peak_sigma:gauge"] > 5e9
-    assert bad["error"].startswith("StateOutOfRangeError: Al2024")
+    assert bad["error"].startswith("StateOutOfRangeError: layer[1].stress = -50 GPa: Al2024")
     assert math.isnan(bad["peak_sigma:gauge"])
     doc = json.loads(table.to_json(tmp_path / "sweep.json"))
     assert doc["rows"][1]["peak_sigma:gauge"] is None
