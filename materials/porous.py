@@ -410,7 +410,13 @@ class PorousWaveCurve(StressRange):
             v = bracketed_newton(residual, lo, hi, rel_tol=2e-16, f_tol=noise)
         except (NoSolutionError, StateOutOfRangeError):
             self.check_stress(sigma)
-            raise
+            # a highly porous solid is heated so much that its compacted matrix would lie
+            # beyond the expanded volumes its equation of state covers
+            raise StateOutOfRangeError(
+                f"{mat.name}: compaction to {sigma / 1e9:.6g} GPa from "
+                f"{start.sigma / 1e9:.6g} GPa leaves the volume range of its matrix's "
+                f"equation of state (densities {1.0 / (alpha * v_hi):.6g} to "
+                f"{1.0 / (alpha * v_lo):.6g} kg/m3 at distension {alpha:.6g})") from None
         a_prime = float(solid._a_prime(v / alpha))
         f_v = a_prime / alpha - 0.5 * b * load
         f_s = -a_prime * v * dalpha / alpha**2 + 0.5 * b * (start.v - v) - alpha - sigma * dalpha

@@ -25,6 +25,7 @@ from materials import (
     MaterialError,
     MieGruneisen,
     Shock,
+    StateOutOfRangeError,
     get,
     material_from_spec,
     solve_boundary,
@@ -350,3 +351,16 @@ def test_scene_file_inline_porous_material_with_units():
     assert body.rho0 == pytest.approx(library.rho0, rel=1e-15)
     assert body.crush_stress == pytest.approx(library.crush_stress, rel=1e-15)
     assert body.crush_alpha(1e9) == pytest.approx(library.crush_alpha(1e9), rel=1e-14)
+
+
+def test_compaction_beyond_the_matrix_range_is_a_named_error_not_an_internal_one():
+    """Campaign seed 780: a foam crushed past the volumes its matrix's equation of state
+    covers (the anomalous Hugoniot of PS_foam leaves it at 0.27 GPa) said "root not
+    bracketed"; it names the material, the stress and the range."""
+    from random_scenes import campaign_scene
+
+    with pytest.raises(StateOutOfRangeError) as caught:
+        run(campaign_scene(780))
+    message = str(caught.value)
+    assert message.startswith("PS_foam: compaction to ") and "bracketed" not in message
+    assert "matrix's equation of state (densities" in message and "\n" not in message
