@@ -42,6 +42,22 @@ def promised_balance(report: dict) -> float:
     return max(BALANCE_FACTOR * record / scale, ROUNDING)
 
 
+def live_content(engine, t: float) -> tuple[float, float]:
+    """The momentum content ``sum rho0 |u| dX`` (kg/(m^2 s)) and energy content
+    ``sum rho0 (|e| + u^2/2) dX`` (J/m^2) of the live regions at time ``t`` (s): the
+    scales the balance is measured on, as a run holds them (walking its fronts)."""
+    momentum = energy = 0.0
+    front = engine.head
+    while front is not None and front.next is not None:
+        region, width = front.region_right, front.next.position(t) - front.position(t)
+        if region is not None and width > 0.0:
+            mass = region.material.rho0 * width
+            momentum += mass * abs(region.state.u)
+            energy += mass * (abs(region.state.e) + 0.5 * region.state.u ** 2)
+        front = front.next
+    return momentum, energy
+
+
 def balance(solution) -> dict:
     """The run's balance at ``t_end``: relative momentum residual, signed relative energy
     residual (positive: energy created), and the promise they are held to."""

@@ -154,15 +154,7 @@ def budget(engine, t: float) -> tuple[float, float]:
     content ``sum rho0 |u| dX`` and energy content ``sum rho0 (|e| + u^2/2) dX`` the
     material has held so far (the scales the balance is measured on), measured again
     only when a coalescing would exceed the budget known (it never shrinks)."""
-    momentum = energy = 0.0
-    front = engine.head
-    while front is not None and front.next is not None:
-        region, width = front.region_right, front.next.position(t) - front.position(t)
-        if region is not None and width > 0.0:
-            mass = region.material.rho0 * width
-            momentum += mass * abs(region.state.u)
-            energy += mass * (abs(region.state.e) + 0.5 * region.state.u ** 2)
-        front = front.next
+    momentum, energy = balance.live_content(engine, t)
     promise = BUDGET * balance.promised_balance(engine.resolution.report())
     held = engine.coalesce_budget or (0.0, 0.0)
     engine.coalesce_budget = (max(held[0], promise * momentum), max(held[1], promise * energy))

@@ -59,12 +59,12 @@ SITES = (FrontKind.BOUNDARY, FrontKind.INTERFACE, FrontKind.GAP)
 @dataclass(eq=False)
 class Pending:
     """A mismatch of ``stress`` (Pa) at ``site`` since ``since`` (s), which may make the
-    impulse ``reserved`` (Pa s): it is solved again at ``deadline`` (s)."""
+    impulse ``allowed`` (Pa s): it is solved again at ``deadline`` (s)."""
 
     site: object
     stress: float
     since: float
-    reserved: float
+    allowed: float
     deadline: float
 
 
@@ -121,12 +121,12 @@ def _note(engine, site, dropped_stress: float, t: float) -> None:
     _settle(ledger, site, t)
     if dropped_stress <= ROUNDING * engine.resolution.stress_scale:
         return
-    reserved = _available(engine, ledger, t) / SHARES
-    deadline = t + reserved / dropped_stress
+    allowed = _available(engine, ledger, t) / SHARES
+    deadline = t + allowed / dropped_stress
     if deadline > engine.t_end:
-        reserved = dropped_stress * (engine.t_end - t)
+        allowed = dropped_stress * (engine.t_end - t)
         deadline = engine.t_end
-    entry = Pending(site, dropped_stress, t, reserved, deadline)
+    entry = Pending(site, dropped_stress, t, allowed, deadline)
     ledger.pending[site.id] = entry
     if deadline < engine.t_end:
         engine.push_mismatch(entry)
@@ -146,28 +146,15 @@ def _settle(ledger: Ledger, site, t: float) -> None:
     entry = ledger.pending.pop(site.id, None)
     if entry is None:
         return
-    ledger.made += min(entry.stress * (t - entry.since), entry.reserved)
+    ledger.made += min(entry.stress * (t - entry.since), entry.allowed)
 
 
 def _available(engine, ledger: Ledger, t: float) -> float:
     """The impulse (Pa s) mismatches may still make: the budget less what they made (the
     budget is measured again when this runs short)."""
     if ledger.budget is None or ledger.budget - ledger.made <= 0.0:
-        content = momentum_content(engine, t)
+        content = balance.live_content(engine, t)[0]
         ledger.content = max(ledger.content, content)
         promise = balance.promised_balance(engine.resolution.report())
         ledger.budget = BUDGET * promise * ledger.content
     return max(ledger.budget - ledger.made, 0.0)
-
-
-def momentum_content(engine, t: float) -> float:
-    """The stack's momentum content ``sum rho0 |u| dX`` (kg/(m^2 s)) at time ``t`` (s),
-    walking the live fronts."""
-    content = 0.0
-    front = engine.head
-    while front is not None and front.next is not None:
-        region, width = front.region_right, front.next.position(t) - front.position(t)
-        if region is not None and width > 0.0:
-            content += region.material.rho0 * width * abs(region.state.u)
-        front = front.next
-    return content

@@ -82,9 +82,7 @@ def affordable(engine, cost: float, t: float) -> bool:
     budget; if so it is counted (``Counters.neglect_cost``)."""
     budget = engine.neglect_budget
     if cost > budget.limit and t >= budget.refresh:
-        content = sum(region.material.rho0 * width * (abs(region.state.e)
-                                                      + 0.5 * region.state.u ** 2)
-                      for region, width in _cells(engine, t))
+        content = balance.live_content(engine, t)[1]
         promise = balance.promised_balance(engine.resolution.report())
         budget.limit = max(budget.limit, BUDGET * promise * content)
         budget.refresh = t + REFRESH * engine.t_end
@@ -92,13 +90,3 @@ def affordable(engine, cost: float, t: float) -> bool:
         return False
     engine.counters.neglect_cost += cost
     return True
-
-
-def _cells(engine, t: float):
-    """The live regions and their widths (m) at ``t``."""
-    front = engine.head
-    while front is not None and front.next is not None:
-        width = front.next.position(t) - front.position(t)
-        if front.region_right is not None and width > 0.0:
-            yield front.region_right, width
-        front = front.next
