@@ -8,7 +8,9 @@ process instead of wall-clock seconds, so an outcome does not depend on what els
 machine runs.  A run that reaches the limit stops with its partial solution
 (``Engine.stop_early``).  Prints one row per seed (outcome, events, simulated time
 reached over ``t_end``, CPU seconds, fronts gathered at pile-ups and coalesced) and the
-number that finished; with ``--out`` writes the rows as JSON.  The runs use the
+number that finished; with ``--out`` writes the rows as JSON, with each scene's layers
+(model and thickness in um) and the three commonest kinds of event (the kinds of the
+fronts each event gathers, counted by wrapping ``Engine._gather``).  The runs use the
 packages of the tree this script lies in (a copy of the script in another checkout
 measures that checkout).
 """
@@ -24,11 +26,19 @@ from pathlib import Path
 HERE = Path(__file__).resolve().parent
 
 CHILD = """
-import dataclasses, json, sys, time
+import collections, dataclasses, json, sys, time
 sys.path.insert(0, {tests!r})
 time.perf_counter = time.process_time  # the run's limit in CPU seconds of this process
 from random_scenes import strength_stack_scene
 import fronttrack as ft
+from fronttrack.engine import Engine
+kinds = collections.Counter()  # what the events meet: the kinds of the fronts gathered
+gather = Engine._gather
+def counted(self, seed, t, x):
+    group = gather(self, seed, t, x)
+    kinds["-".join(sorted(f.kind.value for f in group))] += 1
+    return group
+Engine._gather = counted
 scene = strength_stack_scene({seed})
 scene = dataclasses.replace(scene, accuracy=dataclasses.replace(
     scene.accuracy, max_seconds={limit}, max_events=10**7))
@@ -49,6 +59,9 @@ try:
 except ft.WavediagramError as error:
     row.update(outcome=type(error).__name__)
 row["cpu"] = time.process_time() - start
+row["kinds"] = kinds.most_common(3)
+row["layers"] = " ".join(f"{{type(l.material).__name__}} {{l.thickness * 1e6:.0f}}"
+                         for l in scene.layers)
 print(json.dumps(row))
 """
 

@@ -2,7 +2,7 @@
 
     python benchmarks/run_length.py            # writes benchmarks/RUN_LENGTH.md
     python benchmarks/run_length.py --quick    # fewer lengths, for a smoke test
-    python benchmarks/run_length.py --stacks   # only (d), appended to RUN_LENGTH.md
+    python benchmarks/run_length.py --stacks   # only (d), replaced in RUN_LENGTH.md
     python benchmarks/run_length.py --case b   # only (b), printed (nothing written)
 
 For scenes whose wave content does not grow, events and solve time should grow
@@ -17,7 +17,7 @@ multiply once the plates separate (3.54 µs) unless coalesced (its exponent is f
 from 6 µs, when the separated plates ring); (c) a 10 µm PMMA layer between tungsten
 anvils (piston at 100 m/s on the left, wall on the right), a ring-up; (d) random
 stacks of solids with strength (``tests/random_scenes.py::strength_stack_scene``,
-fixed seeds): how many finish within the cap.  Each run is capped at ``--max-seconds``
+fixed seeds): how many finish within 10 s of CPU time each.  Each run is capped at ``--max-seconds``
 (wall clock); a run stopped by the cap or by the event limit is listed and left out of
 the fit.  Under each table, the events per µs of simulated time between successive
 lengths: constant once a scene's wave content stops growing.  Times are wall-clock
@@ -27,7 +27,6 @@ seconds on this machine (stated in the output).
 from __future__ import annotations
 
 import argparse
-import dataclasses
 import itertools
 import math
 import os
@@ -42,7 +41,6 @@ ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 sys.path.insert(0, str(ROOT / "tests"))
 
-from random_scenes import strength_stack_scene  # noqa: E402
 
 import fronttrack as ft  # noqa: E402
 
@@ -128,26 +126,46 @@ def rates(rows: list[dict]) -> str:
     return "Events per µs between successive lengths: " + ("; ".join(parts) or "–") + "."
 
 
-def strength_stacks(seeds: range, max_seconds: float) -> list[str]:
-    """(d): each random stack with a wall-clock cap; the outcomes counted."""
-    outcomes, seconds = {}, []
-    for seed in seeds:
-        scene = strength_stack_scene(seed)
-        scene = dataclasses.replace(
-            scene, accuracy=dataclasses.replace(scene.accuracy, max_seconds=max_seconds))
-        start = time.perf_counter()
-        try:
-            solution = ft.run(scene)
-            outcome = "time cap" if solution.stats.get("stopped") else "finished"
-        except ft.WavediagramError as error:
-            outcome = type(error).__name__
-        seconds.append(time.perf_counter() - start)
-        outcomes[outcome] = outcomes.get(outcome, 0) + 1
+def strength_stacks(seeds: range, cpu_limit: float) -> list[str]:
+    """(d): each random stack in its own process, capped at ``cpu_limit`` CPU seconds of
+    that process (``benchmarks/pile_up.py``: the outcome does not depend on the load);
+    one row per seed (its layers, how far it got, its commonest kinds of event) and the
+    outcomes counted."""
+    from pile_up import run_seed
+
+    load = os.getloadavg()[0]
+    rows = [run_seed(seed, cpu_limit) for seed in seeds]
     lines = [f"### (d) random stacks of solids with strength, seeds {seeds.start}-"
-             f"{seeds.stop - 1}, cap {max_seconds:g} s", "", "| outcome | scenes |", "|---|---:|"]
+             f"{seeds.stop - 1}, cap {cpu_limit:g} CPU s", "",
+             f"Each seed in its own process (`benchmarks/pile_up.py`); load average "
+             f"{load:.1f} at the start, {os.getloadavg()[0]:.1f} at the end.", "",
+             "| seed | layers (model, um) | outcome | events | t reached / t_end | CPU s "
+             "| commonest events |", "|---:|---|---|---:|---:|---:|---|"]
+    lines += [f"| {r['seed']} | {r.get('layers', '')} | {r['outcome']} | "
+              f"{r.get('events', '')} | {r.get('reached', 0.0):.3f} | {r.get('cpu', 0.0):.1f} | "
+              + ", ".join(f"{kind} {count}" for kind, count in r.get("kinds", ())) + " |"
+              for r in rows]
+    outcomes: dict[str, int] = {}
+    for r in rows:
+        outcomes[r["outcome"]] = outcomes.get(r["outcome"], 0) + 1
+    lines += ["", "| outcome | scenes |", "|---|---:|"]
     lines += [f"| {name} | {count} |" for name, count in sorted(outcomes.items())]
-    lines += ["", f"Median time {np.median(seconds):.2f} s, longest {max(seconds):.2f} s.", ""]
+    cpu = [r.get("cpu", 0.0) for r in rows]
+    lines += ["", f"Median {np.median(cpu):.2f} CPU s, longest {max(cpu):.2f} CPU s.", ""]
     return lines
+
+
+def replace_section(text: str, section: list[str]) -> str:
+    """``text`` with the section whose heading is ``section[0]``'s up to its first comma
+    (up to the next ``###`` heading) replaced by ``section``, or ``section`` appended if
+    there is none."""
+    head = section[0].split(",")[0]
+    start = text.find(head)
+    if start < 0:
+        return text + "\n" + "\n".join(section)
+    end = text.find("\n### ", start + len(head))
+    end = len(text) if end < 0 else end + 1
+    return text[:start] + "\n".join(section) + "\n" + text[end:]
 
 
 def main() -> None:
@@ -161,7 +179,7 @@ def main() -> None:
     if args.stacks:
         stacks = strength_stacks(range(30), 10.0)
         out = ROOT / "benchmarks" / "RUN_LENGTH.md"
-        out.write_text(out.read_text() + "\n" + "\n".join(stacks))
+        out.write_text(replace_section(out.read_text(), stacks))
         print("\n".join(stacks))
         return
     transit = 6e-3 / 5328.0
