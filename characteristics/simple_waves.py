@@ -115,6 +115,29 @@ def discretise_fan(fan: Fan, material, max_step: float,
     return rays
 
 
+SPEED_ROUNDING = 1e-12
+"""Characteristics of one fan whose speeds differ by less than this fraction move
+together (rounding, not crossing)."""
+
+
+def diverging(characteristics: list[Characteristic]) -> bool:
+    """Whether a fan's characteristics (head first) spread apart, as those of a centred
+    simple wave must: each no faster than the one ahead of it, ``|c_{k+1}| <= |c_k|``
+    (to ``SPEED_ROUNDING``).
+
+    A fan whose interior states come from a table of a neighbouring isentrope (one
+    within the table tolerance of ``fan.ahead``'s, ``IsentropeTables``) has its head on
+    the true isentrope and its interior on the table's; where the two differ more than
+    a step of the fan spans, the head can be slower than the characteristic behind it.
+    Such rays cross at the point they leave, and the event there solves the same
+    Riemann problem again: the run's clock stops (campaign seeds 749 and 826, gas
+    layers in solid stacks, whose table tolerance is a fraction of their pressure).
+    """
+    speeds = [abs(ch.speed) for ch in characteristics]
+    return all(behind <= ahead * (1.0 + SPEED_ROUNDING)
+               for ahead, behind in zip(speeds, speeds[1:], strict=False))
+
+
 MEASURE_SAMPLES = 32
 """Samples of the isentrope per cell when cells are placed at equal steps of the measure
 ``max(|d sigma| / max_step, |d u| / max_velocity_step)`` (``_by_measure``)."""

@@ -17,7 +17,7 @@ import math
 from dataclasses import dataclass
 
 from characteristics.products_table import fan_table
-from characteristics.simple_waves import discretise_fan
+from characteristics.simple_waves import discretise_fan, diverging
 from materials import Fan, State, StateOutOfRangeError
 
 from .fronts import MIXED, UNKNOWN, Front
@@ -152,6 +152,11 @@ def _fan_fronts(engine, fan: Fan, material, t, x, parent, direction,
     # stress and velocity towards vacuum); the cells keep none (no lattice, no reading)
     own = fan_table(fan) if table is None and res.release == "isentrope" else None
     characteristics = discretise_fan(fan, material, res.step, table or own, res.velocity_step)
+    if table is not None and not diverging(characteristics):
+        # the table's isentrope is too far from the fan's own for its steps: the curve's
+        # exact states (characteristics.simple_waves.diverging)
+        table = None
+        characteristics = discretise_fan(fan, material, res.step, None, res.velocity_step)
     if len(characteristics) == 1 and parent is not None and parent.kind == FrontKind.RAY:
         fan_id, index, count = parent.fan, parent.ray_index, parent.ray_count
     else:
