@@ -23,6 +23,9 @@ drop too.
 
 from __future__ import annotations
 
+import math
+import weakref
+
 import numpy as np
 
 from materials import StateOutOfRangeError
@@ -138,12 +141,38 @@ CONTACT_STRESS_ROUNDING = 1e-12
 (the tables' own rounding: a tighter test never passes and spends every step)."""
 
 
+_NODES: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
+"""Contact nodes solved in a run, per own isentrope table: ``{(id of the far table, far
+invariant, to): {arriving invariant: (sigma, phi_own, phi_far, C_far)}}``.  A contact
+stays while the fans on one side cross it, and each event rebuilds the zone's grid
+from mostly the same invariants (94 % of the nodes of the 16-ray Al 2024 impact to
+2.25 us had been solved before); a node depends on its three invariants alone, and the
+tables live as long as the run."""
+
+
 def _contact_node(table: Isentrope, join, values: np.ndarray, to: int):
     """Stress at a contact between this zone's isentrope and the join's, where ``values``
     (this side's arriving invariants) meet the far side's kept invariant:
     ``phi_own(sigma) + phi_far(sigma) = J+_arriving - J-_far`` (a right end) or
     ``J+_far - J-_arriving`` (a left end).  Returns ``(sigma, phi_own, phi_far, C_far)``
-    per value, NaN where the stress leaves either table."""
+    per value, NaN where the stress leaves either table.  Nodes solved before in the
+    run are looked up (``_NODES``)."""
+    known = _NODES.setdefault(table, {}).setdefault(
+        (id(join.table), join.invariant, to), {})
+    listed = values.tolist()
+    missing = [v for v in dict.fromkeys(listed) if v not in known and math.isfinite(v)]
+    if missing:
+        solved = np.column_stack(_solve_contact_node(table, join, np.array(missing), to))
+        if np.all(np.isfinite(solved)):
+            known.update(zip(missing, solved.tolist(), strict=True))
+        else:  # the stress leaves a table: as before, none of this batch is kept
+            return _solve_contact_node(table, join, values, to)
+    nan = (math.nan,) * 4
+    return tuple(np.array([known.get(v, nan) for v in listed]).reshape(-1, 4).T)
+
+
+def _solve_contact_node(table: Isentrope, join, values: np.ndarray, to: int):
+    """``_contact_node`` solved by Newton's method on the stress for every value."""
     rhs = values - join.invariant if to < 0 else join.invariant - values
     rho_own, rho_far = table.material.rho0, join.table.material.rho0
     sigma = np.full(values.shape, float(join.stress))
