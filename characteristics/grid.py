@@ -10,7 +10,7 @@ on its own isentrope).  The states on the grid ``(J+ values) x (J- values)`` com
 one vectorised call to the isentrope table; the lattice then reads them by index.
 
 A contact node reflects part of what arrives: a weak contact (an entropy jump left
-behind a decaying shock, impedances equal to 1e-6) reflects a ray of step ``dJ`` as a
+behind a decaying shock, impedances equal within 1e-6) reflects a ray of step ``dJ`` as a
 new invariant ``R dJ`` from one the grid holds, whose own reflections are new again,
 so the set of values never closes and the grid outgrows ``MAX_GRID_STATES`` (the
 symmetric Al 2024 impact at 16 rays: 1 636 grids of 467 x 443 built and thrown away to
