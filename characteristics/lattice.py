@@ -133,6 +133,8 @@ class Zone:
     ``(x_lo, x_hi)`` (m) of earlier fracture zones.  ``tag``: a label per slot, carried
     through crossings and reflections to the segments it makes (``Lattice.seg_tag``).
     ``max_nodes``: the zone stops (``"node budget"``) before its node count passes it.
+    ``negligible`` (Pa): a contact node's reflection weaker than half of it is dropped
+    (``characteristics.grid``).
     """
 
     table: Isentrope
@@ -152,6 +154,7 @@ class Zone:
     carried: tuple = ()
     sites: tuple = ()
     max_nodes: int = 10**9
+    negligible: float = 0.0
 
 
 @dataclass

@@ -223,7 +223,8 @@ def _zone(engine, run: _Run, t: float) -> moc.Zone:
         jp=np.array([j[0] for j in invariants]), jm=np.array([j[1] for j in invariants]),
         left=left, right=right, t_now=t, horizon=horizon, strength=strength,
         carried=tuple(carried), sites=tuple(sites),
-        max_nodes=NODES_PER_EVENT * max(engine.acc.max_events - engine.counters.events, 1))
+        max_nodes=NODES_PER_EVENT * max(engine.acc.max_events - engine.counters.events, 1),
+        negligible=engine.resolution.negligible)
 
 
 def _own_invariant(engine, run: _Run, i: int, invariants: list) -> float:

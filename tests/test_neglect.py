@@ -30,8 +30,30 @@ def test_a_fan_overtaking_a_shock_makes_no_energy():
     assert balance["momentum_error"] <= balance["promised"]
     assert solution.stats["contacts"] >= 1
     assert report["warnings"] == []
-    # the weaker jumps were neglected, and counted
-    assert report["neglected_contact_cost"] > 0.0
+    # the weaker jumps were neglected, and counted (the last few, 1e-5 J/m^2 each, are
+    # now contact-node reflections inside lattices, dropped below the negligible stress:
+    # characteristics.grid; their budgeted cost is tested on the Al impact below)
+    assert report["neglected_entropy_contacts"] > 0
+
+
+def test_contacts_within_the_budget_are_neglected_and_counted():
+    # the symmetric Al 2024 impact (2 mm onto 4 mm at 500 m/s) at 16 rays to 1.2 us:
+    # release rays overtaking the spall-plane shocks leave jumps of 14-23 J/kg, each
+    # bounded by rho0 |de| x 4 mm = 23-42 J/m^2, within a quarter of the 2e-3 promise
+    # of the 6.95e5 J/m^2 the flyer brings: none is tracked, each cost is counted
+    import fronttrack as ft
+    from fronttrack import neglect
+    scene = ft.Scene(layers=(ft.Layer("Al2024", "2 mm", velocity="500 m/s"),
+                             ft.Layer("Al2024", "4 mm", bond="unbonded")),
+                     t_end=1.2e-6, accuracy=ft.Accuracy(rays_per_fan=16))
+    solution = ft.run(scene)
+    report = solution.accuracy_report
+    al = get("Al2024")
+    content = 0.5 * al.rho0 * 500.0**2 * 2e-3
+    limit = neglect.BUDGET * report["balance"]["promised"] * content
+    assert solution.stats["contacts"] == 0
+    assert 0.0 < report["neglected_contact_cost"] < 3 * limit
+    assert report["balance"]["energy_error"] < 0.0
 
 
 def test_the_cost_of_a_neglected_contact_is_its_energy_jump_over_the_width_swept():
