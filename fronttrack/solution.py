@@ -233,6 +233,7 @@ class Solution:
             "neglected_entropy_contacts": counters.neglected_contacts,
             "neglected_contact_energy": counters.neglected_contact_energy,
             "neglected_contact_cost": counters.neglect_cost,
+            "dropped_wave_cost": counters.dropped_cost,
             "cavitations": counters.cavitations,
             "release_floors": {name: {"stress": stress, "faces": count}
                                for name, (stress, count) in counters.release_floors.items()},
