@@ -40,9 +40,7 @@ class Counters:
     (``materials.riemann.release_target``); ``ringing``: one entry per ringing layer
     whose remaining echoes were replaced by their limit (``fronttrack.ringing``);
     ``neglect_cost``: the sum of the bounds (J/m^2) on the energy the neglected entropy
-    contacts that could make energy may have moved (``fronttrack.neglect``);
-    ``dropped_cost``: the same for the weak waves dropped whose mismatch could create
-    energy (``fronttrack.dropped``).
+    contacts that could make energy may have moved (``fronttrack.neglect``).
     """
 
     events: int = 0
@@ -67,7 +65,6 @@ class Counters:
     release_floors: dict[str, tuple[float, int]] = field(default_factory=dict)
     ringing: list[dict] = field(default_factory=list)
     neglect_cost: float = 0.0
-    dropped_cost: float = 0.0
 
     def note_release_floor(self, name: str, stress: float) -> None:
         """Count a face of ``name`` that released only down to ``stress`` (Pa)."""

@@ -109,6 +109,7 @@ class Engine:
         self.mismatches = mismatch.new_ledger()
         self.keep_weak_waves = False  # set while a site's mismatch is solved again
         self.neglect_budget = neglect.NeglectBudget()
+        self.drop_ledger = dropped.Ledger()
         self.cluster_watch = cluster.ClusterWatch(self.resolution, self.signal_speed)
 
     # --- ids and objects ------------------------------------------------------------

@@ -77,22 +77,16 @@ class NeglectBudget:
     refresh: float = 0.0
 
 
-def within_budget(engine, cost: float, t: float) -> bool:
-    """Whether a neglect costing ``cost`` (J/m^2) at time ``t`` (s) is within the budget
-    (``fronttrack.dropped`` judges dropped waves on the same budget)."""
+def affordable(engine, cost: float, t: float) -> bool:
+    """Whether a neglect costing ``cost`` (J/m^2) at time ``t`` (s) is within the
+    budget; if so it is counted (``Counters.neglect_cost``)."""
     budget = engine.neglect_budget
     if cost > budget.limit and t >= budget.refresh:
         content = balance.live_content(engine, t)[1]
         promise = balance.promised_balance(engine.resolution.report())
         budget.limit = max(budget.limit, BUDGET * promise * content)
         budget.refresh = t + REFRESH * engine.t_end
-    return cost <= budget.limit
-
-
-def affordable(engine, cost: float, t: float) -> bool:
-    """Whether a neglect costing ``cost`` (J/m^2) at time ``t`` (s) is within the
-    budget; if so it is counted (``Counters.neglect_cost``)."""
-    if not within_budget(engine, cost, t):
+    if cost > budget.limit:
         return False
     engine.counters.neglect_cost += cost
     return True
