@@ -39,6 +39,11 @@ budget bounds the net energy created, not the sum of both signs).  The energy
 the allowed drops made or may still make is reported in ``accuracy.dropped_wave_cost``
 (J/m^2, net: site mismatches that lost energy are credited for what they lost, so it
 may be negative).
+
+Measured: seed 380 +0.25 % -> -0.05 % of the energy (68 -> 79 events); seed 592
++0.52 % -> +0.02 % (2 499 -> 7 690 events: the gas's weak waves are followed once the
+budget is spent, 1.8 s of CPU); Davison's steel to 6 us 4 010 -> 4 164 events; the
+demo unchanged (522 -> 523 events, 12 spall planes).
 """
 
 from __future__ import annotations
