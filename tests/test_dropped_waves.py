@@ -7,7 +7,7 @@ import pytest
 from fronttrack import dropped
 from fronttrack.runner import run
 from fronttrack.scene import Accuracy, Boundary, Layer, Scene
-from materials import ElasticPlastic, FinitePlastic, LinearElastic, State
+from materials import ElasticPlastic, FinitePlastic, IdealGas, LinearElastic, State
 
 
 def _campaign_380() -> Scene:
@@ -39,6 +39,35 @@ def test_an_echo_dropped_where_a_strong_shock_crosses_it_creates_no_energy(monke
     monkeypatch.setattr(dropped, "must_keep", lambda *args: False)
     before = run(_campaign_380()).accuracy_report["balance"]
     assert before["energy_error"] > before["promised"]
+
+
+def _campaign_592() -> Scene:
+    """Campaign seed 592: 0.2 mm of gas (gamma 1.2, 116 kPa) bonded to a 10 um linear
+    elastic foil moving at 100 m/s, struck by an unbonded piston ramping to -100 m/s;
+    Hugoniot release.  The foil rings against the gas, and the waves it sends in carry a
+    few kPa: below the negligible stress (4.95 kPa), but metres per second in the gas."""
+    gas = IdealGas("M0", 1.2, 10.50412040299125)
+    foil = LinearElastic("M1", 4604.891829102509, 5374.7801110704295,
+                         spall_strength=1995429896.8224165)
+    layers = (Layer(gas, 0.0002, 0.0, stress=116064.3797212991, bond="unbonded"),
+              Layer(foil, 1e-05, 100.0, bond="bonded"))
+    return Scene(layers=layers, t_end=2.926783543991916e-06, left=Boundary("free"),
+                 right=Boundary("velocity", ((0.0, 0.0), (8.780350631975748e-07, -100.0))),
+                 accuracy=Accuracy(rays_per_fan=8, release="hugoniot"))
+
+
+def test_weak_gas_waves_dropped_at_contacts_create_no_energy_beyond_the_budget(monkeypatch):
+    # the mismatches stay at the gas's contacts and interface until the next wave comes
+    # (every few ns from the ringing foil, which drops the next one): the site ledger
+    # bounds what they create together to a quarter of the promise times the energy
+    # content; with Hugoniot release every other front is an exact jump, so that bound
+    # is the run's (+2e-4 measured)
+    balance = run(_campaign_592()).accuracy_report["balance"]
+    assert balance["energy_error"] <= dropped.BUDGET * balance["promised"]
+    assert balance["momentum_error"] <= balance["promised"]
+    monkeypatch.setattr(dropped, "must_keep", lambda *args: False)
+    before = run(_campaign_592()).accuracy_report["balance"]
+    assert before["energy_error"] > before["promised"]  # +0.52 % against 0.2 %
 
 
 def test_the_creation_rate_of_an_exact_jump_is_zero_and_of_a_dropped_one_its_flux():
