@@ -60,6 +60,10 @@ BUDGET = 0.25
 """Fraction of the promised energy balance that the mismatches of dropped waves may
 create in all."""
 
+INSTANT = 1e-12
+"""Events less than this fraction of ``t_end`` apart are one instant for the budget
+(the mirror images of a symmetric scene's events differ in time by rounding)."""
+
 REFRESH = 0.01
 """The energy content behind the budget is measured again at most once per this
 fraction of ``t_end``."""
@@ -69,12 +73,17 @@ fraction of ``t_end``."""
 class Ledger:
     """The energy (J/m^2) dropped waves made (``made``), the pending mismatches at sites
     by site id as ``(rate W/m^2, since s)``, the budget (J/m^2; measured when needed,
-    never shrinking) and the time (s) it may next be measured again."""
+    never shrinking) and the time (s) it may next be measured again; ``before``: what
+    was committed before the events of time ``instant`` (s), which those events are
+    judged against (the mirror images of a symmetric scene's events come one after the
+    other at one time, and must be treated alike)."""
 
     made: float = 0.0
     pending: dict = field(default_factory=dict)
     budget: float = 0.0
     refresh: float = 0.0
+    instant: float = -math.inf
+    before: float = 0.0
 
 
 def must_keep(engine, sol, direction: int, region_left, region_right, site,
@@ -150,10 +159,13 @@ def _settle(ledger: Ledger, site, t: float) -> None:
 
 
 def _available(engine, ledger: Ledger, t: float) -> float:
-    """The energy (J/m^2) dropped waves may still create: the budget less what they made
-    and what the pending mismatches may make until ``t_end`` (the budget is measured
-    again when this runs short: it never shrinks)."""
-    committed = cost(engine)
+    """The energy (J/m^2) dropped waves may still create at time ``t`` (s): the budget
+    less what they made and what the pending mismatches may make until ``t_end``, as
+    committed before this instant (the budget is measured again when this runs short:
+    it never shrinks)."""
+    if abs(t - ledger.instant) > INSTANT * engine.t_end:
+        ledger.instant, ledger.before = t, cost(engine)
+    committed = ledger.before
     if ledger.budget - committed <= 0.0 and t >= ledger.refresh:
         promise = balance.promised_balance(engine.resolution.report())
         ledger.budget = max(ledger.budget, BUDGET * promise
