@@ -368,6 +368,13 @@ class _March:
         end = getattr(self.zone, side)
         f = self.fam[slot]
         if f == 0:
+            # a site at the end (every ray has passed it): it stands at its X, and the
+            # bound must not reach it inside the zone (its rays are all beyond the site)
+            if isinstance(end, Bound):
+                x, now = self.zone.sites[self.site[slot]].x, self.zone.t_now
+                t = (_meet(end.x0, end.t0, end.speed, x, now, 0.0) if side == "left"
+                     else _meet(x, now, 0.0, end.x0, end.t0, end.speed))
+                self._push(t, "stop", slot, f"{side} bound", single=True)
             return
         if isinstance(end, Reflector):
             if (f < 0) == (side == "left"):

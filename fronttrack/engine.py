@@ -35,6 +35,7 @@ from . import (
     archive,
     cluster,
     coalesce,
+    dropped,
     initiation,
     interactions,
     mismatch,
@@ -108,6 +109,7 @@ class Engine:
         self.mismatches = mismatch.new_ledger()
         self.keep_weak_waves = False  # set while a site's mismatch is solved again
         self.neglect_budget = neglect.NeglectBudget()
+        self.drop_ledger = dropped.Ledger()
         self.cluster_watch = cluster.ClusterWatch(self.resolution, self.signal_speed)
 
     # --- ids and objects ------------------------------------------------------------
@@ -415,10 +417,12 @@ class Engine:
             self.counters.note_release_floor(*sol.release_floor)
         material_left = region_left.material if region_left is not None else None
         material_right = region_right.material if region_right is not None else None
+        keep = [dropped.must_keep(self, sol, d, region_left, region_right, site or new_site,
+                                  t) for d in (-1, 1)]
         left_specs = outgoing.wave_fronts(self, sol.left_waves, material_left, t, x, incoming,
-                                          -1, site or new_site)
+                                          -1, site or new_site, keep[0])
         right_specs = outgoing.wave_fronts(self, sol.right_waves, material_right, t, x,
-                                           incoming, +1, site or new_site)
+                                           incoming, +1, site or new_site, keep[1])
         mismatch.note_event(self, site or new_site, group, t,
                             sol.left_waves if left_specs is None else (),
                             sol.right_waves if right_specs is None else ())

@@ -32,6 +32,7 @@ import numpy as np
 from characteristics.reconstruct import Cell, Crossing, knots
 from materials import State
 
+from . import dropped
 from .archive import FrontTable, RegionTable, compact
 from .errors import SceneError
 from .event_log import EventRecord
@@ -233,6 +234,7 @@ class Solution:
             "neglected_entropy_contacts": counters.neglected_contacts,
             "neglected_contact_energy": counters.neglected_contact_energy,
             "neglected_contact_cost": counters.neglect_cost,
+            "dropped_wave_cost": dropped.cost(engine),
             "cavitations": counters.cavitations,
             "release_floors": {name: {"stress": stress, "faces": count}
                                for name, (stress, count) in counters.release_floors.items()},

@@ -1,0 +1,93 @@
+"""A weak wave is dropped only when the mismatch it leaves cannot create energy beyond the
+neglect budget (``fronttrack.dropped``).  Reproductions from the random-scene campaign
+(``tests/random_scenes.py``), inline."""
+
+import pytest
+
+from fronttrack import dropped
+from fronttrack.runner import run
+from fronttrack.scene import Accuracy, Boundary, Layer, Scene
+from materials import ElasticPlastic, FinitePlastic, IdealGas, LinearElastic, State
+
+
+def _campaign_380() -> Scene:
+    """Campaign seed 380: a 6.4 GPa stress on an elastic-plastic plate (3 mm) pushing a
+    linear elastic plate (3 mm, 1.5 km/s) and a finite-plastic foil (0.2 mm, in tension)
+    into a wall.  A 158 GPa shock in the linear elastic plate crosses a 0.17 GPa echo whose
+    continuation is below the negligible stress (0.168 GPa)."""
+    m0 = ElasticPlastic("M0", 15075.992123499156, 81267705105.6337, 37637743564.06618,
+                        585767983.3712156, spall_strength=1398813483.7039165)
+    m1 = LinearElastic("M1", 12012.413755078107, 8422.300263872412)
+    m2 = FinitePlastic("M2", 16558.431688322693, 5138.911958768194, 1.089624148778907,
+                       1.7259013922529927, 53778025540.372055, 188327237.6047747,
+                       spall_strength=893236292.744934)
+    layers = (Layer(m0, 0.003, 100.0, bond="unbonded"),
+              Layer(m1, 0.003, 1500.0, bond="unbonded"),
+              Layer(m2, 0.0002, 1500.0, stress=-219819079.99729556, bond="bonded"))
+    return Scene(layers=layers, t_end=9.079946138528259e-07,
+                 left=Boundary("stress", ((0.0, 6413850121.934201),)), right=Boundary("wall"),
+                 accuracy=Accuracy(rays_per_fan=16, release="hugoniot"))
+
+
+def test_an_echo_dropped_where_a_strong_shock_crosses_it_creates_no_energy(monkeypatch):
+    # the rule decides: without it the shock carries the dropped echo's jump and creates
+    # 0.25 % of the energy (promise 0.2 %) in the 0.27 us before it reaches the foil
+    solution = run(_campaign_380())
+    balance = solution.accuracy_report["balance"]
+    assert abs(balance["energy_error"]) <= balance["promised"]
+    assert balance["momentum_error"] <= balance["promised"]
+    monkeypatch.setattr(dropped, "must_keep", lambda *args: False)
+    before = run(_campaign_380()).accuracy_report["balance"]
+    assert before["energy_error"] > before["promised"]
+
+
+def _campaign_592() -> Scene:
+    """Campaign seed 592: 0.2 mm of gas (gamma 1.2, 116 kPa) bonded to a 10 um linear
+    elastic foil moving at 100 m/s, struck by an unbonded piston ramping to -100 m/s;
+    Hugoniot release.  The foil rings against the gas, and the waves it sends in carry a
+    few kPa: below the negligible stress (4.95 kPa), but metres per second in the gas."""
+    gas = IdealGas("M0", 1.2, 10.50412040299125)
+    foil = LinearElastic("M1", 4604.891829102509, 5374.7801110704295,
+                         spall_strength=1995429896.8224165)
+    layers = (Layer(gas, 0.0002, 0.0, stress=116064.3797212991, bond="unbonded"),
+              Layer(foil, 1e-05, 100.0, bond="bonded"))
+    return Scene(layers=layers, t_end=2.926783543991916e-06, left=Boundary("free"),
+                 right=Boundary("velocity", ((0.0, 0.0), (8.780350631975748e-07, -100.0))),
+                 accuracy=Accuracy(rays_per_fan=8, release="hugoniot"))
+
+
+def test_weak_gas_waves_dropped_at_contacts_create_no_energy_beyond_the_budget(monkeypatch):
+    # the mismatches stay at the gas's contacts and interface until the next wave comes
+    # (every few ns from the ringing foil, which drops the next one): the site ledger
+    # bounds what they create together to a quarter of the promise times the energy
+    # content it measured (with Hugoniot release every other front is an exact jump);
+    # the content is not the balance's scale, so the test holds the run to its promise
+    # (+4.9e-4 measured, promise 2e-3)
+    balance = run(_campaign_592()).accuracy_report["balance"]
+    assert balance["energy_error"] <= balance["promised"]
+    assert balance["momentum_error"] <= balance["promised"]
+    monkeypatch.setattr(dropped, "must_keep", lambda *args: False)
+    before = run(_campaign_592()).accuracy_report["balance"]
+    assert before["energy_error"] > before["promised"]  # +0.52 % against 0.2 %
+
+
+def test_the_creation_rate_of_an_exact_jump_is_zero_and_of_a_dropped_one_its_flux():
+    # a linear elastic jump satisfying its jump conditions at speed +C moves no energy
+    # of its own: rho0 C (E_l - E_r) = sigma_l u_l - sigma_r u_r
+    rho0, c = 8000.0, 5000.0
+    z, modulus = rho0 * c, rho0 * c * c
+    ahead = State(sigma=1e9, u=100.0, v=(1 - 1e9 / modulus) / rho0,
+                  e=0.5 * 1e9**2 / (rho0 * modulus))
+    sigma = 3e9
+    behind = State(sigma=sigma, u=ahead.u + (sigma - ahead.sigma) / z,
+                   v=(1 - sigma / modulus) / rho0, e=0.5 * sigma**2 / (rho0 * modulus))
+    scale = behind.sigma * behind.u
+    assert abs(dropped.creation_rate(rho0, c, behind, ahead, -1)) < 1e-12 * scale
+    # at a site (speed 0) with equal stresses the rate is sigma times the speed at which
+    # the two faces move apart: a region that keeps u = 0 left of a star at 1 m/s under
+    # 1 GPa makes 1 GW/m^2
+    old = State(sigma=1e9, u=0.0, v=1.0 / rho0, e=0.0)
+    star = State(sigma=1e9, u=1.0, v=1.0 / rho0, e=0.0)
+    assert dropped.creation_rate(rho0, 0.0, old, star, -1) == pytest.approx(1e9, rel=1e-12)
+    # the same mismatch on the right side closes the faces: energy is lost
+    assert dropped.creation_rate(rho0, 0.0, old, star, +1) == pytest.approx(-1e9, rel=1e-12)
