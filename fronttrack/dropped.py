@@ -73,7 +73,8 @@ fraction of ``t_end``."""
 @dataclass
 class Ledger:
     """The energy (J/m^2) dropped waves made (``made``), the pending mismatches at sites
-    by site id as ``(rate W/m^2, since s)``, the budget (J/m^2; measured when needed,
+    by site id as ``(rate W/m^2, since s)`` and the most they may make by ``t_end``
+    (``pending_bound``, J/m^2, kept as a running sum), the budget (J/m^2; measured when needed,
     never shrinking) and the time (s) it may next be measured again; ``before``: what
     was committed before the events of time ``instant`` (s), which those events are
     judged against (the mirror images of a symmetric scene's events come one after the
@@ -81,6 +82,7 @@ class Ledger:
 
     made: float = 0.0
     pending: dict = field(default_factory=dict)
+    pending_bound: float = 0.0
     budget: float = 0.0
     refresh: float = 0.0
     instant: float = -math.inf
@@ -96,7 +98,7 @@ def must_keep(engine, sol, direction: int, region_left, region_right, site,
     is kept anyway).  The event settles its site's pending mismatch first."""
     ledger = engine.drop_ledger
     if site is not None:
-        _settle(ledger, site, t)
+        _settle(engine, ledger, site, t)
     waves, other = ((sol.left_waves, sol.right_waves) if direction < 0
                     else (sol.right_waves, sol.left_waves))
     region = region_left if direction < 0 else region_right
@@ -118,7 +120,7 @@ def must_keep(engine, sol, direction: int, region_left, region_right, site,
         if rate > 0.0 and rate * (engine.t_end - t) > _available(engine, ledger, t):
             return True
         previous = ledger.pending.get(site.id, (0.0, t))[0]  # the other side, this event
-        ledger.pending[site.id] = (previous + rate, t)
+        _set_pending(engine, ledger, site.id, previous + rate, t)
         return False
     if not rate > 0.0:
         return False
@@ -148,14 +150,29 @@ def cost(engine) -> float:
     """The energy (J/m^2) the dropped waves' mismatches made, and may still make (the
     pending ones until ``t_end``)."""
     ledger = engine.drop_ledger
-    return ledger.made + sum(max(rate, 0.0) * (engine.t_end - since)
-                             for rate, since in ledger.pending.values())
+    return ledger.made + ledger.pending_bound
 
 
-def _settle(ledger: Ledger, site, t: float) -> None:
+def _bound(engine, rate: float, since: float) -> float:
+    """The most (J/m^2) a pending mismatch of ``rate`` (W/m^2) since ``since`` (s) may
+    create by ``t_end``."""
+    return max(rate, 0.0) * (engine.t_end - since)
+
+
+def _set_pending(engine, ledger: Ledger, site_id: int, rate: float, since: float) -> None:
+    old = ledger.pending.get(site_id)
+    if old is not None:
+        ledger.pending_bound -= _bound(engine, *old)
+    ledger.pending[site_id] = (rate, since)
+    ledger.pending_bound += _bound(engine, rate, since)
+
+
+def _settle(engine, ledger: Ledger, site, t: float) -> None:
     entry = ledger.pending.get(site.id)
     if entry is not None and entry[1] < t:  # made by an earlier event: solved again now
         del ledger.pending[site.id]
+        ledger.pending_bound = (0.0 if not ledger.pending else
+                                ledger.pending_bound - _bound(engine, *entry))
         ledger.made += entry[0] * (t - entry[1])
 
 
