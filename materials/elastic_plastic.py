@@ -189,7 +189,7 @@ class ElasticPlastic(Material):
         self.yield_stresses(state)
         return state
 
-    def yield_stresses(self, state: State) -> tuple[float, float]:
+    def yield_stresses(self, state: State, check: bool = True) -> tuple[float, float]:
         """``(low, high)``: the stresses (Pa) at which ``state`` yields on unloading and loading.
 
         They bound its elastic range: ``high = sigma + (2Y/3 - S) 3 (lambda + 2 mu)/(4 mu)``
@@ -197,20 +197,14 @@ class ElasticPlastic(Material):
         (or ``low == sigma``) on the yield surface.  Raises ``StateOutOfRangeError``
         if the state's stress disagrees with the law at its strains (a plastically
         strained state without its ``plastic_strain``) or lies outside the yield
-        surface.
+        surface.  ``check=False`` skips the comparison with the law, for states this
+        model's own jumps made (the hot path of ``materials.elastic_contact``).
         """
         eps, ep = self.strain(state.v), state.plastic_strain
         scale = (abs(state.sigma) + self.longitudinal_modulus * (abs(eps) + 1e-6)
                  + 2.0 * self.mu * abs(ep))
-        law = self.stress_at(state.v, ep)
-        # near zero strain the slack is the rounding of the strain itself (a few ulps of
-        # the volume: 1e-15 of strain is 3e-4 Pa in steel, above 1e-9 of M 1e-6)
-        rounding = 64.0 * _EPS * self.longitudinal_modulus
-        if not abs(law - state.sigma) <= _CONSISTENCY * scale + rounding:
-            raise StateOutOfRangeError(
-                f"{self.name}: stress {state.sigma / 1e9:.9g} GPa disagrees with the "
-                f"elastic–plastic law at that volume and plastic strain {ep:.6g} "
-                f"({law / 1e9:.9g} GPa); is the state's plastic_strain missing?")
+        if check:
+            self._check_law(state, scale)
         if math.isinf(self.yield_strength):
             return -math.inf, math.inf
         limit = 2.0 * self.yield_strength / 3.0
@@ -225,6 +219,20 @@ class ElasticPlastic(Material):
         room_down = 0.0 if room_down <= snap else room_down
         factor = 0.75 * self.longitudinal_modulus / self.mu
         return state.sigma - room_down * factor, state.sigma + room_up * factor
+
+    def _check_law(self, state: State, scale: float) -> None:
+        """Raise ``StateOutOfRangeError`` if ``state.sigma`` is not the law's stress at
+        its volume and plastic strain (within ``_CONSISTENCY`` of ``scale``, Pa)."""
+        ep = state.plastic_strain
+        law = self.stress_at(state.v, ep)
+        # near zero strain the slack is the rounding of the strain itself (a few ulps of
+        # the volume: 1e-15 of strain is 3e-4 Pa in steel, above 1e-9 of M 1e-6)
+        rounding = 64.0 * _EPS * self.longitudinal_modulus
+        if not abs(law - state.sigma) <= _CONSISTENCY * scale + rounding:
+            raise StateOutOfRangeError(
+                f"{self.name}: stress {state.sigma / 1e9:.9g} GPa disagrees with the "
+                f"elastic–plastic law at that volume and plastic strain {ep:.6g} "
+                f"({law / 1e9:.9g} GPa); is the state's plastic_strain missing?")
 
     # --- energy -------------------------------------------------------------------
     def stored_energy(self, state: State) -> float:
