@@ -419,6 +419,9 @@ class Engine:
                                           -1, site or new_site)
         right_specs = outgoing.wave_fronts(self, sol.right_waves, material_right, t, x,
                                            incoming, +1, site or new_site)
+        mismatch.note_event(self, site or new_site, group, t,
+                            sol.left_waves if left_specs is None else (),
+                            sol.right_waves if right_specs is None else ())
         left_star = sol.left_star if left_specs is not None else (
             region_left.state if region_left is not None else None)
         right_star = sol.right_star if right_specs is not None else (
@@ -429,10 +432,6 @@ class Engine:
             if middle is None:
                 left_star = right_star = self._neglected_contact_state(
                     left_star, right_star, material_left)
-        mismatch.note_event(self, site or new_site, group, t,
-                            sol.left_waves if left_specs is None else (),
-                            sol.right_waves if right_specs is None else (),
-                            _carriers(middle, left_specs, right_specs))
         left_specs = left_specs or []
         right_specs = right_specs or []
         # Fronts left to right, each with the state (and its table) on its right.
@@ -631,19 +630,6 @@ def signal_speed(scene: Scene, stress_scale: float) -> float:
             fastest = max(fastest, material.sound_speed(reference.v, reference.e))
         fastest = max(fastest, getattr(material, "C0", 0.0))
     return SIGNAL_MARGIN * fastest
-
-
-def _carriers(middle, left_specs, right_specs) -> tuple:
-    """The fronts next to an event inside a material that carry the mismatch of a dropped
-    family (``None`` where nothing was dropped, or both were): the event's contact, else
-    the innermost wave of the family kept (``fronttrack.mismatch.note_event``)."""
-    if (left_specs is None) == (right_specs is None):
-        return None, None
-    if middle is not None:
-        return (middle, None) if left_specs is None else (None, middle)
-    if left_specs is None:
-        return right_specs[-1].front if right_specs else None, None
-    return None, left_specs[-1].front if left_specs else None
 
 
 def _contact_within(group, x: float, distance: float) -> bool:

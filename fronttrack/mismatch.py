@@ -26,24 +26,12 @@ the same remainder), by at most the number pending over ``SHARES`` of it.  A foa
 striking a 200 µm plate (``tests/test_mismatch.py``) created 0.21 % of its energy
 without deadlines and balances it to 6e-5 with them.
 
-A family dropped inside a material (two waves crossing there) while the other family
-is kept leaves its jump beside the event: the states either side of the event's entropy
-contact, or of the innermost wave kept where the contact is not tracked, differ by it.
-That front carries the mismatch, with a deadline like a site's, until its next event
-solves it from the states there (settled at the front's end); at the deadline a wave is
-solved again alone, a contact like a site.  Before, the mismatch was given to the next
-site on the dropped side, which it never reaches: campaign seed 936's tension shock ran
-1.8 us into a state 100 MPa off its jump, and seed 491's contacts in a copper powder
-put the momentum balance off by 0.51 % (promise 0.2 %; now 0.18 %,
-``tests/test_mismatch.py``).  Where both families were dropped the two regions are
-merged, and the waves would have run to the next front on each side; where that front
-is a site, the mismatch is the site's (added to any it has); where it is a wave, that
-wave's next event solves it from the states there.
-
-Mismatches no larger than ``ROUNDING`` of the stress scale are rounding.  The
-reflections dropped where waves cross an entropy contact are not followed: the
-material's own waves cross contacts all the time, and forcing weak waves there
-multiplies them (the quartz-on-steel contact
+A wave dropped inside a material (two waves crossing there) would have run to the next
+front on its side; where that front is a site, the mismatch is the site's (added to any
+it has); where it is a wave, that wave's next event solves it from the states there.
+Mismatches no larger than ``ROUNDING`` of the stress scale are rounding.  Entropy
+contacts inside a material are not followed: the material's own waves cross them all
+the time, and forcing weak waves there multiplies them (the quartz-on-steel contact
 comb of ``tests/test_engine_hard.py``, kept without coalescing, went from 17 302 events
 to past 200 000).
 """
@@ -103,26 +91,16 @@ def new_ledger() -> Ledger:
     return Ledger(pending={})
 
 
-def note_event(engine, site, group, t: float, dropped_left, dropped_right,
-               carriers=(None, None)) -> None:
+def note_event(engine, site, group, t: float, dropped_left, dropped_right) -> None:
     """After an event at time ``t`` (s) among the fronts ``group``, at ``site`` (or
     none), that dropped the waves ``dropped_left`` and ``dropped_right`` (leading first).
 
     At a site, its pending mismatch is settled and the new one (if any) follows it.
-    Inside a material, where one family was dropped and the other kept, the states
-    either side of the front ``carriers[k]`` left next to the event on the kept side
-    (its entropy contact, or its innermost wave) differ by the dropped family ``k``
-    (0: left, 1: right): that front carries the mismatch until its next event.  Where
-    both were dropped, the waves would have run to the next front on their side; where
-    that front is a site, the mismatch is the site's (added to what it has)."""
+    Waves dropped inside a material would have run to the next front on their side;
+    where that front is a site, the mismatch is the site's (added to what it has)."""
     left, right = _total(dropped_left), _total(dropped_right)
     if site is not None:
         _note(engine, site, left + right, t)
-        return
-    for dropped, carrier in ((left, carriers[0]), (right, carriers[1])):
-        if dropped > 0.0 and carrier is not None:
-            _note(engine, carrier, dropped, t, carried=True)
-    if carriers != (None, None):
         return
     for dropped, neighbour in ((left, group[0].prev), (right, group[-1].next)):
         if dropped > 0.0 and neighbour is not None:
@@ -134,11 +112,10 @@ def _total(waves) -> float:
     return sum(abs(w.behind.sigma - w.ahead.sigma) for w in waves)
 
 
-def _note(engine, site, dropped_stress: float, t: float, carried: bool = False) -> None:
+def _note(engine, site, dropped_stress: float, t: float) -> None:
     """Settle the pending mismatch of ``site`` at time ``t`` and give the one it has now,
-    ``dropped_stress`` (Pa), a deadline (``carried``: a wave or contact that carries it
-    from the event that made it)."""
-    if site.kind not in SITES and not carried:
+    ``dropped_stress`` (Pa), a deadline."""
+    if site.kind not in SITES:
         return
     ledger = engine.mismatches
     _settle(ledger, site, t)
@@ -174,10 +151,7 @@ def _settle(ledger: Ledger, site, t: float) -> None:
 
 def _available(engine, ledger: Ledger, t: float) -> float:
     """The impulse (Pa s) mismatches may still make: the budget less what they made (the
-    budget is measured again when this runs short).  Mismatches carried by fronts that
-    ended since (a wave's next event solved it) are settled first, at their end."""
-    for entry in [e for e in ledger.pending.values() if not e.site.alive]:
-        _settle(ledger, entry.site, entry.site.t1)
+    budget is measured again when this runs short)."""
     if ledger.budget is None or ledger.budget - ledger.made <= 0.0:
         content = balance.live_content(engine, t)[0]
         ledger.content = max(ledger.content, content)
