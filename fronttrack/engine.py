@@ -432,8 +432,7 @@ class Engine:
             region_right.state if region_right is not None else None)
         middle = site if site is not None else new_site
         if middle is None and left_star is not None and right_star is not None:
-            middle = self._entropy_contact(left_star, right_star, material_left, t, x, group,
-                                           region_left.layer, not left_specs, not right_specs)
+            middle = self._entropy_contact(left_star, right_star, material_left, t, x, group)
             if middle is None:
                 left_star = right_star = self._neglected_contact_state(
                     left_star, right_star, material_left)
@@ -465,14 +464,14 @@ class Engine:
             site=middle.id if middle is not None else None))
 
     def _entropy_contact(self, left: State, right: State, material, t: float,
-                         x: float, group, layer: int, left_continues: bool,
-                         right_continues: bool) -> Front | None:
+                         x: float, group) -> Front | None:
         """A contact for the entropy jump between two star states, if it matters.
 
         A contact that would reflect less than the negligible stress from the scene's
         largest wave (``Material.contact_reflection``) and whose energy jump per unit
-        reference volume (``rho0 |e_L - e_R|``, Pa) is below it too is not tracked
-        (every later crossing would be an event for nothing): the two states are merged
+        reference volume (``rho0 |e_L - e_R|``, Pa) is below it too, and whose bound on
+        the energy the neglect moves fits the budget (``fronttrack.neglect``), is not
+        tracked (every later crossing would be an event for nothing): the two states are merged
         and the largest relative volume jump so neglected is reported.  The energy test
         matters behind a decaying shock: there the entropy jump reflects almost nothing,
         but a merged state off the shock's Hugoniot would make the shock create energy
@@ -488,13 +487,12 @@ class Engine:
         heat = material.rho0 * abs(left.e - right.e) / res.stress_scale
         keep = self.acc.entropy_contacts and max(jump, heat) > ENTROPY_JUMP_TOLERANCE
         if keep and res.negligible > 0.0 and math.isfinite(left.v + right.v):
-            # below both thresholds, the waves beside a hotter region that continues may
-            # still make more energy than the run can afford (fronttrack.neglect)
+            # below both thresholds, the waves beside the replaced state may still make
+            # or lose more energy than the run can afford (fronttrack.neglect)
             keep = (material.contact_reflection(left, right, res.stress_scale) > res.negligible
                     or material.rho0 * abs(left.e - right.e) > res.negligible
-                    or neglect.creates(left, right, left_continues, right_continues)
-                    and not neglect.affordable(self, neglect.neglect_cost(
-                        self, material, layer, left, right, t), t))
+                    or not neglect.affordable(self, neglect.neglect_cost(
+                        self, material, group, x, left, right, t), t))
         if keep and _contact_within(group, x, self.acc.contact_resolution):
             keep = False
             counters.unresolved_contacts += 1

@@ -416,7 +416,10 @@ def _splice(engine, run: _Run, lat: moc.Lattice, t: float) -> None:
         a.next, b.prev = b, a
     _update_gaps(engine, run, lat, sites)
     for a, b in zip(chain[:-1], chain[1:], strict=True):
-        engine.push_pair(a, b, max(lat.cut, t) if math.isfinite(lat.cut) else t)
+        # from when both exist: a front leaving the lattice before its cut may meet a
+        # site at the lattice's edge before the cut (taking the cut, a ray passed a
+        # contact unseen and was pulled back to it 63 ns later)
+        engine.push_pair(a, b, max(t, a.t0, b.t0))
     for end, emitted in lat.emitted.items():
         _send_through(engine, run.left_end if end == "left" else run.right_end, end, emitted,
                       lat.cut, origin)

@@ -1,10 +1,12 @@
 """Neglected entropy contacts may lose energy, never make it (``fronttrack.neglect``)."""
 
+import itertools
+
 import pytest
 
 from fronttrack.runner import run
 from fronttrack.scene import Accuracy, Boundary, Layer, Scene
-from materials import State, get
+from materials import FinitePlastic, State, get
 
 
 def _overtaking_scene() -> Scene:
@@ -59,35 +61,27 @@ def test_contacts_within_the_budget_are_neglected_and_counted():
 def test_the_cost_of_a_neglected_contact_is_its_energy_jump_over_the_width_swept():
     from fronttrack import neglect
     from fronttrack.engine import Engine
+    from fronttrack.fronts import Front
+    from fronttrack.kinds import FrontKind
     engine = Engine(_overtaking_scene())
     mo = get("Mo")
     left = State(sigma=1e9, u=50.0, v=mo.v0 * 0.99, e=1200.0)
     right = State(sigma=1e9, u=50.0, v=mo.v0 * 0.99, e=1000.0)
-    # late in the run a wave sweeps at most the signal speed times the time left ...
+    # two waves meet at X = 1 mm of the Mo, between the interface (50 um) and the free
+    # face (3.05 mm), with a ray of a fan between them and the face: no wave leaving the
+    # event sweeps farther than the farther site, 2.05 mm away, before its next event
+    chain = [Front(1, FrontKind.INTERFACE, 50e-6, 0.0),
+             Front(2, FrontKind.SHOCK, 1e-3, 0.0), Front(3, FrontKind.RAY, 1e-3, 0.0),
+             Front(4, FrontKind.RAY, 2e-3, 0.0), Front(5, FrontKind.BOUNDARY, 3.05e-3, 0.0)]
+    for a, b in itertools.pairwise(chain):
+        a.next, b.prev = b, a
+    group = chain[1:3]
+    assert neglect.neglect_cost(engine, mo, group, 1e-3, left, right, 0.0) == pytest.approx(
+        mo.rho0 * 200.0 * 2.05e-3, rel=1e-12)
+    # late in the run a wave sweeps at most the signal speed times the time left
     t = engine.t_end - 1e-9
-    assert neglect.neglect_cost(engine, mo, 1, left, right, t) == pytest.approx(
+    assert neglect.neglect_cost(engine, mo, group, 1e-3, left, right, t) == pytest.approx(
         mo.rho0 * 200.0 * engine.signal_speed * 1e-9, rel=1e-6)
-    # ... early on, at most its layer (3 mm of Mo)
-    assert neglect.neglect_cost(engine, mo, 1, left, right, 0.0) == pytest.approx(
-        mo.rho0 * 200.0 * 3e-3, rel=1e-12)
-
-
-@pytest.mark.parametrize(("left_continues", "right_continues", "hotter", "creates"), [
-    (False, False, "left", False),  # waves on both sides: the cooler state fills between
-    (True, False, "left", True),    # the hotter left region goes on behind the waves
-    (True, False, "right", False),  # the cooler one does: the waves can only lose
-    (False, True, "right", True),
-    (False, True, "left", False),
-    (True, True, "left", True),     # merged: the mean is hotter than one side
-])
-def test_only_a_hotter_region_that_continues_can_make_energy(left_continues,
-                                                            right_continues, hotter,
-                                                            creates):
-    from fronttrack import neglect
-    hot = State(sigma=1e9, u=0.0, v=1e-4, e=2000.0)
-    cold = State(sigma=1e9, u=0.0, v=1e-4, e=1000.0)
-    left, right = (hot, cold) if hotter == "left" else (cold, hot)
-    assert neglect.creates(left, right, left_continues, right_continues) is creates
 
 
 def test_regions_merged_behind_shocks_make_no_energy():
@@ -103,3 +97,29 @@ def test_regions_merged_behind_shocks_make_no_energy():
     assert balance["energy_error"] < 0.0
     assert balance["momentum_error"] <= balance["promised"]
     assert any(line.startswith("energy lost") for line in report["warnings"])
+
+
+def _wall_and_stress_scene() -> Scene:
+    # campaign seed 28: 3 mm of Zn at -300 m/s against a wall, a 10 um finite-plastic
+    # layer at 500 m/s pushed by a 2.4 GPa stress, 16 rays, Hugoniot release
+    m1 = FinitePlastic("M1", 4796.59, 5869.06, 1.10488, 1.22510, 23.0576e9, 0.555785e9)
+    return Scene(layers=(Layer(get("Zn"), 3e-3, -300.0, bond="unbonded"),
+                         Layer(m1, 10e-6, 500.0)),
+                 left=Boundary("wall"), right=Boundary("stress", ((0.0, 2.40228e9),)),
+                 t_end=1.28297e-6,
+                 accuracy=Accuracy(rays_per_fan=16, release="hugoniot", max_events=5000))
+
+
+def test_neglects_that_lose_energy_are_held_to_the_budget_too():
+    # before: only contacts whose neglect could make energy were budgeted; the
+    # lower-energy state taken behind the shocks of this scene lost 0.40 % of the
+    # energy against a promise of 0.2 %.  Every neglect is now held to the budget (a
+    # quarter of the promise each, bounded by the width its waves can sweep before
+    # meeting a site), and the balance is within the promise, still a loss
+    solution = run(_wall_and_stress_scene())
+    report = solution.accuracy_report
+    balance = report["balance"]
+    assert -balance["promised"] <= balance["energy_error"] < 0.0
+    assert balance["momentum_error"] <= balance["promised"]
+    assert report["neglected_contact_cost"] > 0.0
+    assert not any("energy lost" in line for line in report["warnings"])
