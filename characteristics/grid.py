@@ -183,7 +183,10 @@ def _solve_contact_node(table: Isentrope, join, values: np.ndarray, to: int):
             phi_far, c_far = join.table.arrays_at_stress(sigma)
         except StateOutOfRangeError:
             return nan, nan, nan, nan
-        slope = 1.0 / (rho_own * c_own) + 1.0 / (rho_far * c_far)
+        with np.errstate(divide="ignore"):
+            # a side at zero sound speed (a gas at zero pressure) is infinitely
+            # compliant: the slope is infinite and that node's stress stays put
+            slope = 1.0 / (rho_own * c_own) + 1.0 / (rho_far * c_far)
         step = (phi_own + phi_far - rhs) / slope
         sigma = sigma - step
         if np.all(np.abs(step) <= CONTACT_STRESS_ROUNDING * rho_own * c_own * c_own):
@@ -199,15 +202,18 @@ def _solve_contact_node(table: Isentrope, join, values: np.ndarray, to: int):
 def _snap_width(zone, joins: dict) -> float:
     """Invariant distance (m/s) within which a contact node's reflection is taken as
     a value the grid holds: ``Zone.negligible / (rho0 C_L)`` at each join's stress
-    (the smaller over the joins; zero without a join)."""
+    (the smaller over the joins; zero without a join, and zero where a join's sound
+    speed vanishes, as in a gas at zero pressure: no invariant distance there is within
+    a stress tolerance, so nothing is snapped)."""
     if not joins or zone.negligible <= 0.0:
         return 0.0
     rho0 = zone.table.material.rho0
     try:
-        return min(zone.negligible / (rho0 * zone.table.speed_at_stress(join.stress))
-                   for join in joins.values())
+        speeds = [zone.table.speed_at_stress(join.stress) for join in joins.values()]
     except StateOutOfRangeError:
         return 0.0
+    slowest = min(speeds)
+    return zone.negligible / (rho0 * slowest) if slowest > 0.0 else 0.0
 
 
 def _snapped(values: np.ndarray, held: np.ndarray, width: float) -> np.ndarray:

@@ -124,8 +124,10 @@ def must_keep(engine, sol, direction: int, region_left, region_right, site,
         return False
     if not rate > 0.0:
         return False
-    cost = rate * min(max(engine.t_end - t, 0.0),
-                      engine.scene.layers[region.layer].thickness / abs(speed))
+    # a wave at rest (zero sound speed: a gas at zero pressure) carries it to t_end
+    crossing = (engine.scene.layers[region.layer].thickness / abs(speed) if speed
+                else math.inf)
+    cost = rate * min(max(engine.t_end - t, 0.0), crossing)
     if cost > _available(engine, ledger, t):
         return True
     ledger.made += cost
