@@ -382,12 +382,16 @@ def solve_boundary(material, state: State, boundary_at: str, *, stress: float | 
         if local is not None:
             lo, hi, guess, r_lo, r_hi = local
         else:
-            r_lo, r_hi = residual(lo)[0], residual(hi)[0]
-            if r_hi < 0.0 or r_lo > 0.0:
+            try:
+                r_lo, r_hi = residual(lo)[0], residual(hi)[0]
+            except StateOutOfRangeError:  # an end of the range no wave reaches (inf)
+                r_lo = r_hi = math.nan
+            if not (r_hi >= 0.0 and r_lo <= 0.0):
+                reach = (f"{lo / 1e9:.6g} to {hi / 1e9:.6g} GPa" if math.isfinite(hi) else
+                         f"from {lo / 1e9:.6g} GPa up to where it leaves that range")
                 raise NoSolutionError(
                     f"{material.name}: a boundary velocity of {velocity:.6g} m/s needs a "
-                    f"stress outside the range of its equation of state ({lo / 1e9:.6g} to "
-                    f"{hi / 1e9:.6g} GPa)"
+                    f"stress outside the range of its equation of state ({reach})"
                 )
         sigma = bracketed_newton(residual, lo, hi, guess, f_lo=r_lo, f_hi=r_hi, f_tol=noise)
     star = curve.state_at(sigma)

@@ -420,3 +420,20 @@ def test_a_wall_or_bonded_piston_pulling_beyond_the_equation_of_state_cavitates(
     face = solution.state_at(0.0, 0.1e-6)
     assert face.sigma == 0.0 and face.u == 2500.0
     assert report["balance"]["energy_error"] <= report["balance"]["promised"]
+
+
+def test_a_piston_pulling_away_from_a_porous_layer_separates_at_once():
+    # campaign seed 226: a piston at -100 m/s behind Cu powder moving at 1500 m/s.  The
+    # porous wave curve's top stress is infinite (its Hugoniot's pole lies inside the
+    # matrix's range), and the boundary solver evaluated its residual there: "compaction
+    # to inf GPa" (StateOutOfRangeError) at the first event.  The pull needs more tension
+    # than the powder carries, so the face separates and is free.
+    import fronttrack as ft
+    from fronttrack.kinds import EventKind
+    scene = ft.Scene(layers=(ft.Layer("Cu_powder", "2 mm", velocity="1500 m/s"),),
+                     left=Boundary("velocity", "-100 m/s"), right=Boundary("free"),
+                     t_end="0.2 us")
+    solution = run(scene)
+    opened = [e for e in solution.events if e.kind is EventKind.GAP_OPEN]
+    assert len(opened) == 1 and opened[0].t == 0.0
+    assert solution.state_at(0.0, 0.1e-6).sigma == 0.0
