@@ -89,21 +89,28 @@ class Ledger:
     before: float = 0.0
 
 
-def must_keep(engine, sol, direction: int, region_left, region_right, site,
-              t: float) -> bool:
-    """Whether the weak family of ``sol`` leaving the event at time ``t`` (s) in
-    ``direction`` (-1 left, +1 right) must be kept although it is negligible: dropping
-    it would create more energy than the budget allows (module docstring).  ``site``:
-    the event's site or ``None``.  ``False`` for a family that is not negligible (it
-    is kept anyway).  The event settles its site's pending mismatch first."""
+def drops(engine, sol, direction: int, region_left, region_right, site, t: float) -> bool:
+    """Whether the family of ``sol`` leaving the event at time ``t`` (s) in ``direction``
+    (-1 left, +1 right) is dropped: it is weaker than the negligible stress and velocity
+    (``outgoing.negligible``), weak waves are not being kept, and what its mismatch may
+    create fits the budget (module docstring).  ``site``: the event's site or ``None``.
+    The event settles its site's pending mismatch first."""
     ledger = engine.drop_ledger
     if site is not None:
         _settle(engine, ledger, site, t)
     waves, other = ((sol.left_waves, sol.right_waves) if direction < 0
                     else (sol.right_waves, sol.left_waves))
-    region = region_left if direction < 0 else region_right
-    if engine.keep_weak_waves or region is None or not negligible(engine, waves):
+    if engine.keep_weak_waves or not waves or not negligible(engine, waves):
         return False
+    region = region_left if direction < 0 else region_right
+    return region is None or not _must_keep(engine, ledger, sol, direction, region, other,
+                                            site, t)
+
+
+def _must_keep(engine, ledger: Ledger, sol, direction: int, region, other, site,
+               t: float) -> bool:
+    """Whether a negligible family must be kept: dropping it would create more energy
+    than the budget allows."""
     old, star = region.state, (sol.left_star if direction < 0 else sol.right_star)
     if not all(math.isfinite(q) for q in (old.sigma, old.u, old.e, star.sigma, star.u,
                                           star.e)):

@@ -417,12 +417,12 @@ class Engine:
             self.counters.note_release_floor(*sol.release_floor)
         material_left = region_left.material if region_left is not None else None
         material_right = region_right.material if region_right is not None else None
-        keep = [dropped.must_keep(self, sol, d, region_left, region_right, site or new_site,
-                                  t) for d in (-1, 1)]
+        drop = [dropped.drops(self, sol, d, region_left, region_right, site or new_site, t)
+                for d in (-1, 1)]
         left_specs = outgoing.wave_fronts(self, sol.left_waves, material_left, t, x, incoming,
-                                          -1, site or new_site, keep[0])
+                                          -1, site or new_site, drop[0])
         right_specs = outgoing.wave_fronts(self, sol.right_waves, material_right, t, x,
-                                           incoming, +1, site or new_site, keep[1])
+                                           incoming, +1, site or new_site, drop[1])
         mismatch.note_event(self, site or new_site, group, t,
                             sol.left_waves if left_specs is None else (),
                             sol.right_waves if right_specs is None else ())

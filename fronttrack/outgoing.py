@@ -55,18 +55,18 @@ class WaveSpec:
 
 
 def wave_fronts(engine, waves, material, t: float, x: float, incoming,
-                direction: int, site=None, keep: bool = False) -> list[WaveSpec] | None:
+                direction: int, site=None, drop: bool = False) -> list[WaveSpec] | None:
     """Fronts for the waves of one direction leaving an event at ``(x, t)``, leading first.
 
-    ``None`` when the whole family is weaker than the negligible stress and velocity (it
-    is dropped).  A single-ray wave leaving a ray's event keeps that ray's fan, so the
-    rays of a fan stay one fan through the events that continue them.  ``site``: the
-    event's site, if any (its kind decides the waves' ``lineage``).  ``keep``: keep the
-    family however weak (``fronttrack.dropped``).
+    ``None`` when the family is dropped (``drop``: weaker than the negligible stress and
+    velocity, and affordable, as ``fronttrack.dropped.drops`` decides).  A single-ray
+    wave leaving a ray's event keeps that ray's fan, so the rays of a fan stay one fan
+    through the events that continue them.  ``site``: the
+    event's site, if any (its kind decides the waves' ``lineage``).
     """
     if not waves:
         return []
-    if not (keep or engine.keep_weak_waves) and negligible(engine, waves):
+    if drop:
         engine.counters.dropped_stress += sum(abs(w.behind.sigma - w.ahead.sigma)
                                               for w in waves)
         engine.counters.dropped_waves += 1

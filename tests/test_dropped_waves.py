@@ -36,7 +36,7 @@ def test_an_echo_dropped_where_a_strong_shock_crosses_it_creates_no_energy(monke
     balance = solution.accuracy_report["balance"]
     assert abs(balance["energy_error"]) <= balance["promised"]
     assert balance["momentum_error"] <= balance["promised"]
-    monkeypatch.setattr(dropped, "must_keep", lambda *args: False)
+    monkeypatch.setattr(dropped, "_must_keep", lambda *args: False)
     before = run(_campaign_380()).accuracy_report["balance"]
     assert before["energy_error"] > before["promised"]
 
@@ -66,7 +66,7 @@ def test_weak_gas_waves_dropped_at_contacts_create_no_energy_beyond_the_budget(m
     balance = run(_campaign_592()).accuracy_report["balance"]
     assert balance["energy_error"] <= balance["promised"]
     assert balance["momentum_error"] <= balance["promised"]
-    monkeypatch.setattr(dropped, "must_keep", lambda *args: False)
+    monkeypatch.setattr(dropped, "_must_keep", lambda *args: False)
     before = run(_campaign_592()).accuracy_report["balance"]
     assert before["energy_error"] > before["promised"]  # +0.52 % against 0.2 %
 

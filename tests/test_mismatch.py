@@ -26,7 +26,7 @@ def _foam_on_a_thin_plate() -> ft.Scene:
 def test_a_mismatch_no_wave_clears_is_solved_again_within_its_budget(monkeypatch):
     # the deadlines alone (the dropped-wave budget, fronttrack.dropped, would keep the
     # foam's wave too: see the next test)
-    monkeypatch.setattr(dropped, "must_keep", lambda *args: False)
+    monkeypatch.setattr(dropped, "_must_keep", lambda *args: False)
     solution = ft.run(_foam_on_a_thin_plate())
     report = solution.accuracy_report
     balance = report["balance"]
