@@ -183,6 +183,21 @@ def test_gas_expansion_to_vacuum():
     assert fan.head_speed == pytest.approx(c * gas.v0 / a.v, rel=1e-15)
 
 
+def test_gas_released_along_its_hugoniot_stops_at_a_finite_volume():
+    """Along its Hugoniot a gas reaches sigma = 0 where e = 0: e_a = sigma_a (v - v_a) / 2
+    with e_a = sigma_a v_a / (gamma - 1) gives v = v_a (gamma + 1) / (gamma - 1), and the
+    Rayleigh line gives u = u_a - sqrt(sigma_a (v - v_a)) (campaign seed 592 was sent to
+    vacuum, u = -inf)."""
+    g = 1.2
+    gas = IdealGas("g", g, rho0=10.5)
+    a = gas.state_from_pressure(10.5, 116e3, u=3.0)
+    b = gas.wave_curve(a, RIGHT, release="hugoniot").state_at(0.0)
+    v = a.v * (g + 1) / (g - 1)
+    assert b.v == pytest.approx(v, rel=1e-13)
+    assert b.u == pytest.approx(3.0 - math.sqrt(116e3 * (v - a.v)), rel=1e-13)
+    assert abs(b.e) <= 1e-12 * a.e
+
+
 @pytest.mark.parametrize("centre", [0.0, 3e9, 40e9])
 def test_release_curve_endpoints_are_reachable(mg, centre):
     """The whole reported stress range is usable: sigma_min and sigma_max are on the curve."""
