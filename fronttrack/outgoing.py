@@ -41,7 +41,10 @@ def lineage(engine, incoming, site) -> int:
     if not incoming or (site is not None and site.kind in EDGES):
         return engine.next_wave_id()
     first = incoming[0].lineage
-    return first if all(f.lineage == first for f in incoming) else MIXED
+    for front in incoming:
+        if front.lineage != first:
+            return MIXED
+    return first
 
 
 @slot_init
@@ -73,7 +76,11 @@ def wave_fronts(engine, waves, material, t: float, x: float, incoming,
                                               for w in waves)
         engine.counters.dropped_waves += 1
         return None
-    parent = next((f for f in incoming if f.direction == direction), None)
+    parent = None
+    for front in incoming:
+        if front.direction == direction:
+            parent = front
+            break
     origin = lineage(engine, incoming, site)
     specs = []
     for wave in waves:
