@@ -70,6 +70,8 @@ beyond it, fronts are kept."""
 SAME_SPEED = 1e-12
 """Two waves move at one speed when their speeds differ by less than this fraction."""
 
+_SHOCK, _CONTACT = FrontKind.SHOCK, FrontKind.CONTACT  # read once: asked at every event
+
 JUMP_TOLERANCE = 1e-9
 """A merged wave must satisfy its momentum jump condition to this fraction of the
 stress scale (it does to rounding on a linear branch)."""
@@ -95,9 +97,12 @@ def coalesce_around(engine, fronts, t: float) -> None:
 
 def _similar(a: Front, b: Front) -> bool:
     """Both waves of one direction and one speed, or both contacts."""
-    if a.kind == FrontKind.SHOCK and b.kind == FrontKind.SHOCK:
+    kind = a.kind
+    if kind != b.kind:
+        return False
+    if kind == _SHOCK:
         return a.direction == b.direction and abs(a.speed - b.speed) <= SAME_SPEED * abs(a.speed)
-    return a.kind == FrontKind.CONTACT and b.kind == FrontKind.CONTACT
+    return kind == _CONTACT
 
 
 def _coalesce(engine, a: Front, b: Front, t: float) -> Front | None:

@@ -46,7 +46,7 @@ from . import (
     zones,
 )
 from .counters import Counters
-from .event_log import EventLog, EventRecord
+from .event_log import EventLog
 from .fronts import UNKNOWN, Front, Region, inside_fan
 from .kinds import FrontKind, Release
 from .resolution import Resolution, initial_state, resolve
@@ -458,10 +458,9 @@ class Engine:
         if middle is not None and middle.kind == FrontKind.GAP:
             self.push_gap_closure(middle)
         coalesce.coalesce_around(self, items, t)
-        self.events.append(EventRecord(
-            t=t, x=x, kind=kind, incoming=[f.id for f in incoming],
-            outgoing=[f.id for f in items if not f.is_site],
-            site=middle.id if middle is not None else None))
+        self.events.log(t, x, kind, [f.id for f in incoming],
+                        [f.id for f in items if not f.is_site],
+                        middle.id if middle is not None else None)
 
     def _entropy_contact(self, left: State, right: State, material, t: float,
                          x: float, group) -> Front | None:

@@ -39,22 +39,33 @@ class EventLog(Sequence):
         self._t, self._x = array("d"), array("d")
         self._kind, self._site, self._nodes = array("b"), array("q"), array("q")
         self._kinds: list = []
+        self._kind_codes: dict = {}  # kind -> its index in _kinds
         self._ids = array("q")  # incoming then outgoing fronts of each event
         self._starts = array("q", [0])  # event k's ids: _starts[k] to _starts[k + 1]
         self._splits = array("q")  # where its outgoing ids begin
 
     def append(self, event: EventRecord) -> None:
-        if event.kind not in self._kinds:
-            self._kinds.append(event.kind)
-        self._t.append(event.t)
-        self._x.append(event.x)
-        self._kind.append(self._kinds.index(event.kind))
-        self._site.append(NO_SITE if event.site is None else event.site)
-        self._nodes.append(event.nodes)
-        self._ids.extend(event.incoming)
-        self._splits.append(len(self._ids))
-        self._ids.extend(event.outgoing)
-        self._starts.append(len(self._ids))
+        self.log(event.t, event.x, event.kind, event.incoming, event.outgoing, event.site,
+                 event.nodes)
+
+    def log(self, t: float, x: float, kind: str, incoming, outgoing, site: int | None = None,
+            nodes: int = 0) -> None:
+        """Append the event of these fields (those of ``EventRecord``) without making the
+        record (the engine logs one per event)."""
+        code = self._kind_codes.get(kind)
+        if code is None:
+            code = self._kind_codes[kind] = len(self._kinds)
+            self._kinds.append(kind)
+        self._t.append(t)
+        self._x.append(x)
+        self._kind.append(code)
+        self._site.append(NO_SITE if site is None else site)
+        self._nodes.append(nodes)
+        ids = self._ids
+        ids.extend(incoming)
+        self._splits.append(len(ids))
+        ids.extend(outgoing)
+        self._starts.append(len(ids))
 
     def __len__(self) -> int:
         return len(self._t)

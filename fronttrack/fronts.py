@@ -24,7 +24,9 @@ from dataclasses import dataclass, field
 
 from materials import State
 
-from .kinds import FrontKind
+from .kinds import SITE_KINDS, FrontKind
+
+_SITES = frozenset(SITE_KINDS)
 
 UNKNOWN = object()
 """A region's isentrope not looked up yet."""
@@ -123,7 +125,7 @@ class Front:
 
     @property
     def is_site(self) -> bool:
-        return self.kind.is_site
+        return self.kind in _SITES  # FrontKind.is_site, asked at every event
 
     def position(self, t: float) -> float:
         """Lagrangian position (m) at time ``t`` (s)."""

@@ -19,6 +19,7 @@ from dataclasses import dataclass
 from characteristics.products_table import fan_table
 from characteristics.simple_waves import discretise_fan, diverging
 from materials import Fan, State, StateOutOfRangeError
+from materials.frozen import slot_init
 
 from .fronts import MIXED, UNKNOWN, Front
 from .kinds import FrontKind
@@ -40,9 +41,13 @@ def lineage(engine, incoming, site) -> int:
     if not incoming or (site is not None and site.kind in EDGES):
         return engine.next_wave_id()
     first = incoming[0].lineage
-    return first if all(f.lineage == first for f in incoming) else MIXED
+    for front in incoming:
+        if front.lineage != first:
+            return MIXED
+    return first
 
 
+@slot_init
 @dataclass(frozen=True, slots=True)
 class WaveSpec:
     """A new front with the states ahead of and behind it, and the isentrope table of
@@ -71,7 +76,11 @@ def wave_fronts(engine, waves, material, t: float, x: float, incoming,
                                               for w in waves)
         engine.counters.dropped_waves += 1
         return None
-    parent = next((f for f in incoming if f.direction == direction), None)
+    parent = None
+    for front in incoming:
+        if front.direction == direction:
+            parent = front
+            break
     origin = lineage(engine, incoming, site)
     specs = []
     for wave in waves:
@@ -95,6 +104,10 @@ def negligible(engine, waves) -> bool:
     """Whether a family of ``waves`` (leading first) is weaker than the run resolves, by
     its total variation in stress and in velocity: a detonation and its Taylor wave to a
     free face (up to p_CJ and back to zero) is not a wave of zero strength."""
+    if len(waves) == 1:  # most events: one wave, no sums to build
+        (wave,) = waves
+        return engine.resolution.is_negligible(wave.behind.sigma - wave.ahead.sigma,
+                                               wave.behind.u - wave.ahead.u)
     return bool(waves) and engine.resolution.is_negligible(
         sum(abs(w.behind.sigma - w.ahead.sigma) for w in waves),
         sum(abs(w.behind.u - w.ahead.u) for w in waves))
@@ -113,6 +126,8 @@ def _weak_shock_ray(engine, shock, material, t, x, parent, direction,
     whose release stopped at the end of its equation of state, ``release_target``).
     """
     res = engine.resolution
+    if not getattr(material, "makes_fans", False):
+        return None  # no isentrope table (characteristics.isentrope): its shocks stay shocks
     if (res.release != "isentrope" or abs(shock.behind.sigma - shock.ahead.sigma) > res.step
             or abs(shock.behind.u - shock.ahead.u) > res.velocity_step):
         return None

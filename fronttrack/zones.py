@@ -64,6 +64,8 @@ class _Run:
 
 def try_zone(engine, group: list[Front], t: float) -> bool:
     """Solve the event of ``group`` at ``t`` as part of a lattice; False if it is not one."""
+    if not engine.resolution.makes_fans:
+        return False  # no isentrope tables: no ray carries an invariant (``_eligible``)
     table = _eligible(engine, group)
     if table is None:
         return False

@@ -132,6 +132,18 @@ class ElasticPlastic(Material):
         self.C0 = math.sqrt(self.longitudinal_modulus / self.rho0)
         self.CB = math.sqrt(self.bulk_modulus / self.rho0)
         self.hel = self.longitudinal_modulus * self.yield_strength / (2.0 * self.mu)
+        # read at every event of a ringing plate (``yield_stresses``, the wave curves,
+        # ``materials.elastic_contact``): computed once
+        self.impedance = self.rho0 * self.C0
+        """Elastic impedance ``rho0 C0`` (kg/(m^2 s))."""
+        self.bulk_impedance = self.rho0 * self.CB
+        """Plastic impedance ``rho0 CB`` (kg/(m^2 s))."""
+        self._two_mu = 2.0 * self.mu
+        self._yield_limit = 2.0 * self.yield_strength / 3.0  # |S| on the yield surface
+        self._yield_factor = 0.75 * self.longitudinal_modulus / self.mu  # d sigma / d S
+        # near zero strain the slack of the law is the rounding of the strain itself (a
+        # few ulps of the volume: 1e-15 of strain is 3e-4 Pa in steel, above 1e-9 of M 1e-6)
+        self._law_rounding = 64.0 * _EPS * self.longitudinal_modulus
 
     @classmethod
     def from_speeds(cls, name: str, rho0: float, c0: float, poisson: float,
@@ -149,16 +161,6 @@ class ElasticPlastic(Material):
         return cls(name, rho0, modulus * nu / (1.0 - nu),
                    modulus * (1.0 - 2.0 * nu) / (2.0 * (1.0 - nu)), yield_strength,
                    spall_strength)
-
-    @property
-    def impedance(self) -> float:
-        """Elastic impedance ``rho0 C0`` (kg/(m^2 s))."""
-        return self.rho0 * self.C0
-
-    @property
-    def bulk_impedance(self) -> float:
-        """Plastic impedance ``rho0 CB`` (kg/(m^2 s))."""
-        return self.rho0 * self.CB
 
     # --- strains, stress, yield -------------------------------------------------
     def strain(self, v: float) -> float:
@@ -200,15 +202,16 @@ class ElasticPlastic(Material):
         surface.  ``check=False`` skips the comparison with the law, for states this
         model's own jumps made (the hot path of ``materials.elastic_contact``).
         """
-        eps, ep = self.strain(state.v), state.plastic_strain
-        scale = (abs(state.sigma) + self.longitudinal_modulus * (abs(eps) + 1e-6)
-                 + 2.0 * self.mu * abs(ep))
-        if check:
-            self._check_law(state, scale)
-        if math.isinf(self.yield_strength):
+        # the arithmetic of strain() and deviator(), inlined (the hot path of a ringing plate)
+        eps, ep, sigma = 1.0 - state.v / self.v0, state.plastic_strain, state.sigma
+        scale = abs(sigma) + self.longitudinal_modulus * (abs(eps) + 1e-6) + self._two_mu * abs(ep)
+        if check and not abs(self.longitudinal_modulus * eps - self._two_mu * ep - sigma) \
+                <= _CONSISTENCY * scale + self._law_rounding:
+            self._check_law(state, scale)  # raises, naming the law's stress
+        limit = self._yield_limit
+        if limit == math.inf:
             return -math.inf, math.inf
-        limit = 2.0 * self.yield_strength / 3.0
-        s = self.deviator(state)
+        s = self._two_mu * (2.0 * eps / 3.0 - ep)
         room_up, room_down = limit - s, limit + s
         if min(room_up, room_down) < -_CONSISTENCY * scale:
             raise StateOutOfRangeError(
@@ -217,18 +220,15 @@ class ElasticPlastic(Material):
         snap = _SNAP * scale
         room_up = 0.0 if room_up <= snap else room_up
         room_down = 0.0 if room_down <= snap else room_down
-        factor = 0.75 * self.longitudinal_modulus / self.mu
-        return state.sigma - room_down * factor, state.sigma + room_up * factor
+        factor = self._yield_factor
+        return sigma - room_down * factor, sigma + room_up * factor
 
     def _check_law(self, state: State, scale: float) -> None:
         """Raise ``StateOutOfRangeError`` if ``state.sigma`` is not the law's stress at
         its volume and plastic strain (within ``_CONSISTENCY`` of ``scale``, Pa)."""
         ep = state.plastic_strain
         law = self.stress_at(state.v, ep)
-        # near zero strain the slack is the rounding of the strain itself (a few ulps of
-        # the volume: 1e-15 of strain is 3e-4 Pa in steel, above 1e-9 of M 1e-6)
-        rounding = 64.0 * _EPS * self.longitudinal_modulus
-        if not abs(law - state.sigma) <= _CONSISTENCY * scale + rounding:
+        if not abs(law - state.sigma) <= _CONSISTENCY * scale + self._law_rounding:
             raise StateOutOfRangeError(
                 f"{self.name}: stress {state.sigma / 1e9:.9g} GPa disagrees with the "
                 f"elastic–plastic law at that volume and plastic strain {ep:.6g} "

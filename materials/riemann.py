@@ -35,12 +35,14 @@ from dataclasses import dataclass
 from .elastic_contact import elastic_contact
 from .elastic_plastic import ElasticPlastic
 from .errors import NoSolutionError, StateOutOfRangeError
+from .frozen import slot_init
 from .roots import EPS as _EPS
 from .roots import bracket_near, bracketed_newton
 from .state import LEFT, RIGHT, State
 from .wavecurves import WEAK_VOLUME_JUMP
 
 
+@slot_init
 @dataclass(frozen=True, slots=True)
 class RiemannSolution:
     """Outcome of a Riemann problem.

@@ -12,12 +12,15 @@ from __future__ import annotations
 
 from dataclasses import dataclass, replace
 
+from .frozen import slot_init
+
 RIGHT = +1
 """Direction of a right-going wave (Lagrangian speed U > 0)."""
 LEFT = -1
 """Direction of a left-going wave (U < 0)."""
 
 
+@slot_init
 @dataclass(frozen=True, slots=True)
 class State:
     """A uniform state: stress (Pa), particle velocity (m/s), volume (m^3/kg), energy (J/kg)."""

@@ -21,9 +21,11 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any
 
+from .frozen import slot_init
 from .state import State
 
 
+@slot_init
 @dataclass(frozen=True, slots=True)
 class Shock:
     """A discontinuity: ``ahead`` -> ``behind`` at Lagrangian speed ``speed`` (m/s, signed)."""
