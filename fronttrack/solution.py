@@ -244,6 +244,7 @@ class Solution:
             "coalesced_momentum": counters.coalesced_momentum,
             "coalesced_energy": counters.coalesced_energy,
             "ringing_replaced": counters.ringing,
+            "fragments_ringing": counters.fragments,
             "gathered_fronts": counters.gathered,
             "gathered_momentum": counters.gathered_momentum,
             "gathered_energy": counters.gathered_energy,
