@@ -126,6 +126,23 @@ class FreeSlab:
         ends = np.append(starts[1:], t_to)
         return starts, self.face_velocity(side, 0.5 * (starts + ends))
 
+    def passages(self, x: float, t_from: float, t_to: float) -> np.ndarray:
+        """The times (s) in ``(t_from, t_to)`` at which a wave of the pattern passes the
+        station ``x`` (m), in order (at a face: its reflections)."""
+        span = 2.0 * self.length
+        steps = self.values - np.roll(self.values, 1)
+        breaks = self.breaks[steps != 0.0]
+        local = x - self.x_lo
+        turns = np.arange(0.0, np.floor((t_to - self.t0) / self.period) + 1.0)
+        times = []
+        for s in {local, span - local}:  # right-going at s, left-going at 2L - s
+            first = np.mod(s - breaks, span) / self.c
+            times.append((self.t0 + first[None, :] + turns[:, None] * self.period).ravel())
+        times = np.unique(np.concatenate(times))
+        # two waves passing at once (a crossing at the station) are one passage
+        times = times[np.concatenate([[True], np.diff(times) > 1e-9 * self.period])]
+        return times[(times > t_from) & (times < t_to)]
+
     def acoustic_energy(self) -> float:
         """The slab's acoustic energy per unit area (J/m^2), ``int P^2 dxi / (Z C)``: the
         strain energy ``sigma^2 / (2 Z C)`` and the kinetic energy of ``u - u0``."""

@@ -83,14 +83,16 @@ class Ring:
     material: object
     energy: float          # total energy per unit area at t0 (J/m^2)
     entry: dict            # its line in accuracy["fragments_ringing"]
+    t_end: float | None = None   # when it was handed back
 
 
 class Rings:
     """The engine's live rings, by region id and by face id, and refusals."""
 
     def __init__(self):
+        self.every: list[Ring] = []
         self.by_region: dict[int, Ring] = {}
-        self.by_face: dict[int, Ring] = {}
+        self.by_face: dict[int, list[Ring]] = {}  # a gap can face two
         self.retry: dict[tuple[int, int], float] = {}
 
     def __bool__(self) -> bool:
@@ -304,7 +306,7 @@ def _replace(engine, slab, sites, bounds, regions, tables, material, t, error) -
         new_regions.append(region)
     ring = Ring(slab=slab, sites=sites, regions=new_regions, tables=tables,
                 material=material, energy=total, entry={
-                    "layer": regions[0].layer, "t": t, "x_lo": slab.x_lo, "x_hi": slab.x_hi,
+                    "layer": regions[0].layer, "t": float(t), "x_lo": slab.x_lo, "x_hi": slab.x_hi,
                     "period": slab.period, "sound_speed": float(slab.c), "u": float(slab.u0),
                     "amplitude": float(slab.values.max() - slab.values.min()),
                     "split": float(error["split"]), "drift": float(error["drift"]),
@@ -312,8 +314,9 @@ def _replace(engine, slab, sites, bounds, regions, tables, material, t, error) -
     for region in new_regions:
         engine.free_rings.by_region[region.id] = ring
     for face in (sites[0], sites[-1]):
-        engine.free_rings.by_face[face.id] = ring
+        engine.free_rings.by_face.setdefault(face.id, []).append(ring)
     engine.counters.fragments.append(ring.entry)
+    engine.free_rings.every.append(ring)
     for gap in (sites[0], sites[-1]):
         if gap.kind == FrontKind.GAP:
             engine.push_gap_closure(gap)
@@ -435,7 +438,11 @@ def hand_back(engine, ring: Ring, t: float) -> None:
     for region in ring.regions:
         rings.by_region.pop(region.id, None)
     for face in (ring.sites[0], ring.sites[-1]):
-        rings.by_face.pop(face.id, None)
+        beside = rings.by_face.get(face.id, [])
+        if ring in beside:
+            beside.remove(ring)
+        if not beside:
+            rings.by_face.pop(face.id, None)
     x, direction, jump = slab.jumps_at(t)
     x_tol = engine.resolution.x_tol
     pieces = []   # per stretch: (fronts, cell states)
@@ -478,7 +485,7 @@ def hand_back(engine, ring: Ring, t: float) -> None:
         b.left_region = chain[-2].region_right.id
         for p, q in zip(chain[:-1], chain[1:], strict=True):
             engine.push_pair(p, q, t)
-    ring.entry["t_end"] = t
+    ring.entry["t_end"] = ring.t_end = t
     ring.entry["energy_offset"] = float(offset)
     ring.entry["handed_back_waves"] = int(sum(len(p[0]) for p in pieces))
 
@@ -519,6 +526,5 @@ def end_at_face(engine, group, t: float) -> None:
     if not rings:
         return
     for front in group:
-        ring = rings.by_face.get(front.id)
-        if ring is not None:
+        for ring in list(rings.by_face.get(front.id, ())):
             hand_back(engine, ring, t)
