@@ -54,6 +54,7 @@ is kept exactly.  Each replacement is listed in ``accuracy["fragments_ringing"]`
 from __future__ import annotations
 
 import dataclasses
+import itertools
 import math
 
 import numpy as np
@@ -180,10 +181,12 @@ def try_replace(engine, group, t: float) -> bool:
     u = np.array([r.state.u for r in regions])
     slab = FreeSlab.from_cells(edges, w, u, t, c, z)
     error = linearisation_error(engine, slab, tables[0], bounds, w, u, t)
-    if error is None:
+    stretches = None if error is None else _stretch_states(
+        slab, sites, bounds, regions, tables, material, t, res.stress_scale)
+    if stretches is None:
         engine.free_rings.retry[key] = t + RETRY_PERIODS * slab.period
         return False
-    _replace(engine, slab, sites, bounds, regions, tables, material, t, error)
+    _replace(engine, slab, sites, bounds, regions, tables, material, t, error, stretches)
     return True
 
 
@@ -262,14 +265,39 @@ def linearisation_error(engine, slab: FreeSlab, table, bounds, w, u, t: float):
     return {"split": split, "drift": drift, "t_remaining": remaining}
 
 
-def _replace(engine, slab, sites, bounds, regions, tables, material, t, error) -> None:
-    """End the fragment's waves and cells at ``t`` and start its ringing regions."""
+def _stretch_states(slab, sites, bounds, regions, tables, material, t: float, scale: float):
+    """For each stretch between two of the fragment's sites: ``(state, energy,
+    carried)`` -- its region's state at zero stress and the mean velocity, with the
+    internal energy that keeps the stretch's total energy (J/m^2, ``energy``) exactly,
+    and the part of it above the isentrope at zero stress (``carried``, J/m^2) -- or
+    ``None`` if the equation of state has no volume for one of them (its stress zero
+    within ``ringing.ENERGY_ROUNDING`` of ``scale``, Pa)."""
+    widths = np.diff([f.position(t) for f in bounds])
+    out, cell = [], 0
+    for j, b in enumerate(sites[1:]):
+        mass = energy = 0.0
+        while cell < len(regions) and bounds[cell] is not b:
+            state = regions[cell].state
+            mass += widths[cell]
+            energy += widths[cell] * (state.e + 0.5 * state.u ** 2)
+            cell += 1
+        e = energy / mass - 0.5 * slab.u0 ** 2
+        rest = _rest_state(tables[j])
+        state = _at_energy(material, rest, e, slab.u0, scale)
+        if state is None:
+            return None
+        out.append((state, material.rho0 * energy, material.rho0 * mass * (e - rest.e)))
+    return out
+
+
+def _replace(engine, slab, sites, bounds, regions, tables, material, t, error,
+             stretches) -> None:
+    """End the fragment's waves and cells at ``t`` and start its ringing regions (one
+    per stretch, ``stretches`` from ``_stretch_states``)."""
     for gap in (sites[0], sites[-1]):
         if gap.kind == FrontKind.GAP:
             advance_gap(engine, gap, t)
     positions = [f.position(t) for f in bounds]
-    widths = np.diff(positions)
-    rho0 = material.rho0
     for k, region in enumerate(regions):
         region.left_points.append((positions[k], t))
         region.right_points.append((positions[k + 1], t))
@@ -280,43 +308,28 @@ def _replace(engine, slab, sites, bounds, regions, tables, material, t, error) -
         front.alive = False
         front.t1, front.x1 = t, front.position(t)
         front.right_region_id = front.region_right.id
-    total = 0.0
-    carried = 0.0
     new_regions = []
-    cell = 0
-    for j, (a, b) in enumerate(zip(sites[:-1], sites[1:], strict=True)):
-        mass = energy = 0.0
-        while cell < len(regions) and bounds[cell] is not b:
-            r = regions[cell]
-            mass += widths[cell]
-            energy += widths[cell] * (r.state.e + 0.5 * r.state.u ** 2)
-            cell += 1
-        e = energy / mass - 0.5 * slab.u0 ** 2
-        rest = _rest_state(tables[j])
-        state = _at_energy(material, rest, e, slab.u0)
-        if state is None:
-            state = dataclasses.replace(rest, u=slab.u0)  # keeps the energy off the EOS
-            state = dataclasses.replace(state, e=e)
-        carried += rho0 * mass * (e - rest.e)
-        total += rho0 * energy
+    for (a, b), (state, _, _) in zip(itertools.pairwise(sites), stretches, strict=True):
         region = engine.new_region(state, material, regions[0].layer, t, (a.x0, t), (b.x0, t))
         a.earlier_regions.append((t, a.region_right.id))
         a.region_right = region
         a.next, b.prev = b, a
         new_regions.append(region)
+    carried = sum(c for _, _, c in stretches)
     ring = Ring(slab=slab, sites=sites, regions=new_regions, tables=tables,
-                material=material, energy=total, entry={
-                    "layer": regions[0].layer, "t": float(t), "x_lo": slab.x_lo, "x_hi": slab.x_hi,
-                    "period": slab.period, "sound_speed": float(slab.c), "u": float(slab.u0),
-                    "amplitude": float(slab.values.max() - slab.values.min()),
+                material=material, energy=sum(e for _, e, _ in stretches), entry={
+                    "layer": regions[0].layer, "t": float(t), "x_lo": slab.x_lo,
+                    "x_hi": slab.x_hi, "period": slab.period, "sound_speed": float(slab.c),
+                    "u": float(slab.u0), "amplitude": float(np.ptp(slab.values)),
                     "split": float(error["split"]), "drift": float(error["drift"]),
                     "ringing_energy": float(carried), "t_end": None, "energy_offset": None})
+    rings = engine.free_rings
     for region in new_regions:
-        engine.free_rings.by_region[region.id] = ring
+        rings.by_region[region.id] = ring
     for face in (sites[0], sites[-1]):
-        engine.free_rings.by_face.setdefault(face.id, []).append(ring)
+        rings.by_face.setdefault(face.id, []).append(ring)
     engine.counters.fragments.append(ring.entry)
-    engine.free_rings.every.append(ring)
+    rings.every.append(ring)
     for gap in (sites[0], sites[-1]):
         if gap.kind == FrontKind.GAP:
             engine.push_gap_closure(gap)
@@ -329,11 +342,11 @@ def _rest_state(table) -> State:
     return State(sigma=0.0, u=0.0, v=v, e=e)
 
 
-def _at_energy(material, rest: State, e: float, u: float) -> State | None:
+def _at_energy(material, rest: State, e: float, u: float, scale: float) -> State | None:
     """The state of zero stress, velocity ``u`` and internal energy ``e`` (its volume
-    from the equation of state, near ``rest``'s), or ``None``."""
-    scale = max(abs(material.rho0 * (e - rest.e)), 1.0)
-    v = ringing._volume_at(material, 0.0, e, rest.v, 1e-12 * scale)
+    from the equation of state, near ``rest``'s, the stress zero within
+    ``ringing.ENERGY_ROUNDING`` of ``scale``, Pa), or ``None``."""
+    v = ringing._volume_at(material, 0.0, e, rest.v, ringing.ENERGY_ROUNDING * scale)
     if v is None:
         return None
     return State(sigma=0.0, u=u, v=v, e=e)
@@ -463,7 +476,8 @@ def hand_back(engine, ring: Ring, t: float) -> None:
     offset = (ring.energy - handed) / (rho0 * mass)
     for j, (a, b) in enumerate(zip(ring.sites[:-1], ring.sites[1:], strict=True)):
         xs, ds, edges, states = pieces[j]
-        states = [_offset(material, s, offset) for s in states]
+        states = [_offset(material, s, offset, engine.resolution.stress_scale)
+                  for s in states]
         old = ring.regions[j]
         old.left_points.append((a.x0, t))
         old.right_points.append((b.x0, t))
@@ -486,6 +500,9 @@ def hand_back(engine, ring: Ring, t: float) -> None:
         for p, q in zip(chain[:-1], chain[1:], strict=True):
             engine.push_pair(p, q, t)
     ring.entry["t_end"] = ring.t_end = t
+    for face in (ring.sites[0], ring.sites[-1]):
+        if face.kind == FrontKind.GAP:  # its closing, from the faces handed back
+            engine.push_gap_closure(face)
     ring.entry["energy_offset"] = float(offset)
     ring.entry["handed_back_waves"] = int(sum(len(p[0]) for p in pieces))
 
@@ -498,13 +515,13 @@ def _on_table(table, w: float, u: float, z: float) -> State:
     return State(sigma=sigma, u=u, v=v, e=e)
 
 
-def _offset(material, state: State, offset: float) -> State:
-    """``state`` with ``offset`` (J/kg) more internal energy at the same stress."""
+def _offset(material, state: State, offset: float, scale: float) -> State:
+    """``state`` with ``offset`` (J/kg) more internal energy at the same stress (its
+    volume from the equation of state, as ``_at_energy``; kept where none is found)."""
     if offset == 0.0:
         return state
     e = state.e + offset
-    scale = max(abs(state.sigma), abs(material.rho0 * offset), 1.0)
-    v = ringing._volume_at(material, state.sigma, e, state.v, 1e-12 * scale)
+    v = ringing._volume_at(material, state.sigma, e, state.v, ringing.ENERGY_ROUNDING * scale)
     return dataclasses.replace(state, e=e, v=v if v is not None else state.v)
 
 
