@@ -69,6 +69,11 @@ from .kinds import BoundaryKind, FrontKind
 MAX_FRONTS = 400
 """A fragment holding more fronts than this is not looked at (the walk stays cheap)."""
 
+MIN_PERIODS = 1.0
+"""A fragment is replaced only if it would ring free (no gap of it closing, the run not
+ending) for at least this many periods: a ring costs a hand-back, whose waves are
+one-characteristic waves, and saves about a period's events per period."""
+
 RETRY_PERIODS = 1.0
 """A fragment refused is looked at again after this many of its periods."""
 
@@ -160,7 +165,8 @@ def try_replace(engine, group, t: float) -> bool:
     if any(s.kind == FrontKind.INTERFACE and s.bond != "bonded" for s in sites[1:-1]):
         return False
     waves = [f for f in inside if not f.is_site]
-    if not waves:
+    if not waves or not (_quiet_beyond(engine, left, "left")
+                         and _quiet_beyond(engine, right, "right")):
         return False
     bounds = [left, *inside, right]
     regions = [f.region_right for f in bounds[:-1]]
@@ -181,6 +187,8 @@ def try_replace(engine, group, t: float) -> bool:
     u = np.array([r.state.u for r in regions])
     slab = FreeSlab.from_cells(edges, w, u, t, c, z)
     error = linearisation_error(engine, slab, tables[0], bounds, w, u, t)
+    if error is not None and _lifetime(engine, slab, left, right, t) < MIN_PERIODS * slab.period:
+        error = None   # handed back before it saves anything
     stretches = None if error is None else _stretch_states(
         slab, sites, bounds, regions, tables, material, t, res.stress_scale)
     if stretches is None:
@@ -188,6 +196,19 @@ def try_replace(engine, group, t: float) -> bool:
         return False
     _replace(engine, slab, sites, bounds, regions, tables, material, t, error, stretches)
     return True
+
+
+def _quiet_beyond(engine, face, side: str) -> bool:
+    """Whether nothing moves beyond ``face`` (on its ``side``, away from the fragment):
+    a boundary, or a gap whose far face is a ring's or has no wave between it and the
+    next site (its velocity is then known until a wave enters from beyond).  A fragment
+    beside a gap whose far side rings with tracked waves would have its gap's closing
+    changed by every one of them (the demo's thin spalled layers): it is not replaced."""
+    if face.kind != FrontKind.GAP:
+        return True
+    beyond = face.prev if side == "left" else face.next
+    far = face.prev.region_right if side == "left" else face.region_right
+    return beyond is None or beyond.is_site or far.id in engine.free_rings.by_region
 
 
 def _stretch_of(bounds) -> list[int]:
@@ -417,14 +438,21 @@ def advance_gap(engine, gap, t: float) -> None:
     gap.gap_time = t
 
 
-def closure_time(engine, gap) -> float:
+def closure_time(engine, gap, candidate=None) -> float:
     """The first time (s, at most ``t_end``; ``inf`` if none) the faces of ``gap``, one
-    of them a ring's, meet."""
+    of them a ring's, meet.  ``candidate``: ``(side, slab)``, a fragment on that side
+    of the gap taken as ringing by ``slab``."""
     t_from, t_to = gap.gap_time, engine.t_end
     if t_to <= t_from:
         return math.inf
-    lo = _side_pieces(engine, gap, "left", t_from, t_to)
-    hi = _side_pieces(engine, gap, "right", t_from, t_to)
+    pieces = {}
+    for side in ("left", "right"):
+        if candidate is not None and candidate[0] == side:
+            face = "right" if side == "left" else "left"
+            pieces[side] = candidate[1].face_pieces(face, t_from, t_to)
+        else:
+            pieces[side] = _side_pieces(engine, gap, side, t_from, t_to)
+    lo, hi = pieces["left"], pieces["right"]
     times = np.unique(np.concatenate([lo[0], hi[0], [t_to]]))
     width = gap.gap_width + (_displacement(*hi, t_from, t_to, times)
                              - _displacement(*lo, t_from, t_to, times))
@@ -437,6 +465,17 @@ def closure_time(engine, gap) -> float:
     # linear between times[k-1] (open) and times[k] (closed)
     w0, w1 = width[k - 1], width[k]
     return float(times[k - 1] + (times[k] - times[k - 1]) * w0 / (w0 - w1))
+
+
+def _lifetime(engine, slab: FreeSlab, left, right, t: float) -> float:
+    """How long (s) a fragment ringing by ``slab`` from ``t`` would stay free: until the
+    first of its gaps closes (its far faces as they are now) or the run ends."""
+    end = engine.t_end
+    for gap, side in ((left, "right"), (right, "left")):
+        if gap.kind == FrontKind.GAP:
+            advance_gap(engine, gap, t)
+            end = min(end, closure_time(engine, gap, (side, slab)))
+    return end - t
 
 
 # --- ending -------------------------------------------------------------------------
