@@ -389,8 +389,8 @@ def _side_pieces(engine, gap, side: str, t_from: float, t_to: float):
     return ring.slab.face_pieces(face_side, t_from, t_to)
 
 
-def _displacement(starts, velocities, t_from: float, t_to: float, times) -> np.ndarray:
-    """The face's displacement (m) from ``t_from`` at ``times`` (s, within the span)."""
+def _displacement(starts, velocities, t_to: float, times) -> np.ndarray:
+    """The face's displacement (m) from ``starts[0]`` at ``times`` (s, up to ``t_to``)."""
     ends = np.append(starts[1:], t_to)
     done = np.concatenate([[0.0], np.cumsum(velocities * (ends - starts))])
     k = np.clip(np.searchsorted(starts, times, side="right") - 1, 0, len(starts) - 1)
@@ -430,10 +430,8 @@ def advance_gap(engine, gap, t: float) -> None:
         gap.gap_width += opening * (t - gap.gap_time)
     else:
         now = np.array([t])
-        lo = _displacement(*_side_pieces(engine, gap, "left", gap.gap_time, t),
-                           gap.gap_time, t, now)
-        hi = _displacement(*_side_pieces(engine, gap, "right", gap.gap_time, t),
-                           gap.gap_time, t, now)
+        lo = _displacement(*_side_pieces(engine, gap, "left", gap.gap_time, t), t, now)
+        hi = _displacement(*_side_pieces(engine, gap, "right", gap.gap_time, t), t, now)
         gap.gap_width += float(hi[0] - lo[0])
     gap.gap_time = t
 
@@ -454,8 +452,8 @@ def closure_time(engine, gap, candidate=None) -> float:
             pieces[side] = _side_pieces(engine, gap, side, t_from, t_to)
     lo, hi = pieces["left"], pieces["right"]
     times = np.unique(np.concatenate([lo[0], hi[0], [t_to]]))
-    width = gap.gap_width + (_displacement(*hi, t_from, t_to, times)
-                             - _displacement(*lo, t_from, t_to, times))
+    width = gap.gap_width + (_displacement(*hi, t_to, times)
+                             - _displacement(*lo, t_to, times))
     closed = np.nonzero(width <= 0.0)[0]
     if closed.size == 0:
         return math.inf
