@@ -35,17 +35,26 @@ min P``):
   l``.
 
 A pattern whose tension would reach a spall strength, a scene with a cumulative-damage
-criterion or planned fractures, and a fragment whose cells do not share one isentrope
-table are not replaced.
+criterion or planned fractures, and a stretch whose cells do not share one isentrope
+table are not replaced; nor is a fragment beside a gap whose far face has tracked
+waves behind it (every one of them would change when the gap closes: the demo's thin
+spalled layers), or one that would not ring free for ``MIN_PERIODS`` periods.
+
+**Its gaps.**  A gap's width is advanced with each face's closed-form displacement
+(``advance_gap``) and its closing found in closed form (``closure_time``: the faces'
+velocities are piecewise constant); a lattice beside it sees the ring's face velocity
+until it next changes (``far_face``).  A wave reaching the gap from across reflects at
+its own free face and leaves the ring alone.  The ring ends when a gap of it closes:
+its waves are handed back at that instant (``hand_back``), and the closure is solved
+as any other.
 
 **Conservation.**  Mass is exact (Lagrangian).  Momentum: ``rho0 L u0`` is the
 fragment's momentum at ``t0`` and a constant of the closed form.  Energy: each region
 of the fragment holds at ``t0`` exactly the total energy of its cells: its kinetic
 energy at ``u0`` and, as internal energy, the rest, of which the part above the
 isentrope at zero stress is the ringing energy carried (``ringing_energy``, J/m^2).
-The run's balance sees no change.  When the ringing ends (a gap closes, or a wave
-arrives at a face from across a gap that is about to close) the fronts are handed back
-at the closed form's state; the energy of the handed-back cells, on their isentropes,
+The run's balance sees no change.  When the ringing ends, its waves are handed back
+at the closed form's state (one-characteristic waves on the isentrope); the energy of the handed-back cells, on their isentropes,
 differs from the carried total by the linearisation's error, which is put back as one
 internal-energy offset over the fragment (``energy_offset``, J/kg) so that the total
 is kept exactly.  Each replacement is listed in ``accuracy["fragments_ringing"]``.
