@@ -57,7 +57,8 @@ The run's balance sees no change.  When the ringing ends, its waves are handed b
 at the closed form's state (one-characteristic waves on the isentrope); the energy of
 the handed-back cells, on their isentropes, differs from the carried total by the
 linearisation's error, which is put back as one internal-energy offset over the
-fragment (``energy_offset``, J/kg) so that the total is kept exactly.  Each replacement is listed in ``accuracy["fragments_ringing"]``.
+fragment (``energy_offset``, J/kg) so that the total is kept exactly.  Each
+replacement is listed in ``accuracy["fragments_ringing"]``.
 """
 
 from __future__ import annotations
