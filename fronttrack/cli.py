@@ -220,6 +220,8 @@ def _solve(scene, quiet: bool):
     solution = run(scene, progress=None if quiet else progress)
     if not quiet:
         stats, report = solution.stats, solution.accuracy_report
+        rang = len(report["fragments_ringing"])
+        rang = f", {rang} free fragments rang in closed form" if rang else ""
         print(f"{start}{scene.title or 'scene'}: {stats['events']} events, "
               f"{stats['fronts']} fronts, "
               f"{len(solution.spalls)} spall planes, solved in {stats['solve_time']:.3g} s "
@@ -227,7 +229,7 @@ def _solve(scene, quiet: bool):
               f"{report['negligible_stress']:.3g} Pa dropped, {report['coalesced_fronts']} "
               f"pairs of fronts closer than {report['coalesce_length'] * 1e6:.3g} um "
               f"coalesced, {len(report['ringing_replaced'])} ringing layers ended at their "
-              f"limit)", file=sys.stderr)
+              f"limit{rang})", file=sys.stderr)
         balance = report["balance"]
         if balance["momentum_error"] is not None and balance["energy_error"] is not None:
             print(f"balance: momentum {balance['momentum_error']:.2g} of its content, energy "

@@ -39,6 +39,8 @@ class Counters:
     equation of state reaches, the highest such floor (Pa) and how many times
     (``materials.riemann.release_target``); ``ringing``: one entry per ringing layer
     whose remaining echoes were replaced by their limit (``fronttrack.ringing``);
+    ``fragments``: one entry per free fragment whose ringing went on in closed form
+    (``fronttrack.fragment``);
     ``neglect_cost``: the sum of the bounds (J/m^2) on the energy the neglected entropy
     contacts that could make energy may have moved (``fronttrack.neglect``).
     """
@@ -64,6 +66,7 @@ class Counters:
     gathered_energy: float = 0.0
     release_floors: dict[str, tuple[float, int]] = field(default_factory=dict)
     ringing: list[dict] = field(default_factory=list)
+    fragments: list[dict] = field(default_factory=list)
     neglect_cost: float = 0.0
 
     def note_release_floor(self, name: str, stress: float) -> None:

@@ -36,6 +36,7 @@ from . import (
     cluster,
     coalesce,
     dropped,
+    fragment,
     initiation,
     interactions,
     mismatch,
@@ -111,6 +112,7 @@ class Engine:
         self.neglect_budget = neglect.NeglectBudget()
         self.drop_ledger = dropped.Ledger()
         self.cluster_watch = cluster.ClusterWatch(self.resolution, self.signal_speed)
+        self.free_rings = fragment.Rings()  # free fragments ringing in closed form
 
     # --- ids and objects ------------------------------------------------------------
     def next_front_id(self) -> int:
@@ -215,6 +217,10 @@ class Engine:
                                     None))
 
     def push_gap_closure(self, gap: Front) -> None:
+        if fragment.touches(self, gap):  # a face rings: its closure in closed form
+            gap.gap_version += 1
+            self.push_site(gap, fragment.closure_time(self, gap))
+            return
         left, right = gap.prev.region_right.state.u, gap.region_right.state.u
         gap.gap_version += 1
         if left > right:
@@ -389,18 +395,18 @@ class Engine:
         piled = None if timer else cluster.gather(self, group, t, x)
         if piled is not None:
             group, x = piled
-        elif not timer and (ringing.try_end(self, group, t) or zones.try_zone(self, group, t)):
+        elif not timer and (fragment.try_replace(self, group, t) or ringing.try_end(self, group, t)
+                            or zones.try_zone(self, group, t)):
             return
+        if timer:
+            fragment.end_at_face(self, group, t)  # a ring's gap closes: its waves come back
         site = cluster.principal_site([f for f in group if f.is_site])
         before = group[0].prev
         region_left = before.region_right if before is not None else None
         region_right = group[-1].region_right
         incoming = [f for f in group if not f.is_site]
         if site is not None and site.kind == FrontKind.GAP:
-            # the faces moved with the states next to them since the last update
-            opening = site.region_right.state.u - site.prev.region_right.state.u
-            site.gap_width += opening * (t - site.gap_time)
-            site.gap_time = t
+            fragment.advance_gap(self, site, t)  # the faces moved with the states beside them
         self.counters.riemann_solves += 1
         kind, solution, new_site = interactions.solve(self, site, region_left, region_right, t,
                                                       x, incoming, timer)

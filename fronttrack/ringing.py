@@ -61,7 +61,7 @@ import math
 from materials import WavediagramError, solve_boundary, solve_contact
 from materials.riemann import RiemannSolution
 
-from . import coalesce
+from . import coalesce, fragment
 from .interactions import contact_strength
 from .kinds import BoundaryKind, EventKind, FrontKind
 
@@ -319,9 +319,7 @@ def _replace(engine, left: _Face, right: _Face, waves, regions, sol, layer_state
     xa, xb = a.x0, b.x0
     for gap in (a, b):
         if gap.kind == FrontKind.GAP:  # the faces moved with the states next to them
-            opening = gap.region_right.state.u - gap.prev.region_right.state.u
-            gap.gap_width += opening * (t - gap.gap_time)
-            gap.gap_time = t
+            fragment.advance_gap(engine, gap, t)
     bounds = [a, *waves, b]
     for k, region in enumerate(regions):
         region.left_points.append((bounds[k].position(t), t))

@@ -32,7 +32,7 @@ import numpy as np
 from characteristics.reconstruct import Cell, Crossing, knots
 from materials import State
 
-from . import dropped
+from . import dropped, ring_records
 from .archive import FrontTable, RegionTable, compact
 from .errors import SceneError
 from .event_log import EventRecord
@@ -202,6 +202,7 @@ class Solution:
     counters: object = None
     fracture_zones: list = field(default_factory=list)
     tables: object = None
+    rings: tuple = ()
     _cache: dict = field(default_factory=dict, repr=False)
 
     @classmethod
@@ -244,6 +245,7 @@ class Solution:
             "coalesced_momentum": counters.coalesced_momentum,
             "coalesced_energy": counters.coalesced_energy,
             "ringing_replaced": counters.ringing,
+            "fragments_ringing": counters.fragments,
             "gathered_fronts": counters.gathered,
             "gathered_momentum": counters.gathered_momentum,
             "gathered_energy": counters.gathered_energy,
@@ -258,7 +260,8 @@ class Solution:
                    events=engine.events, spalls=engine.spalls, stats=stats,
                    accuracy_report=report, min_stress=engine.min_stress,
                    initial_states=engine.initial_states, counters=counters,
-                   fracture_zones=engine.fracture_zones, tables=engine.tables)
+                   fracture_zones=engine.fracture_zones, tables=engine.tables,
+                   rings=ring_records.records(engine))
 
     # --- records ------------------------------------------------------------------------
     @property
@@ -457,6 +460,9 @@ class Solution:
         anything ``station`` takes, ``t`` (s, or a string with a unit) lies in
         ``[0, t_end]``; otherwise ``SceneError``."""
         x, t = self.station(x), self._instant(t)
+        ring = next((r for r in self.rings if r.covers(x, t)), None)
+        if ring is not None:  # a free fragment ringing in closed form
+            return ring.state(x, t)
         profile = self._profile_near(x, t)
         if profile is None:
             return self._region_state(self._region_id_at(x, t))
@@ -516,6 +522,9 @@ class Solution:
         coords, states = knots([g[0] for g in groups], [g[1] for g in groups], cells)
         coords = [0.0, *coords, t_end]
         states = [cells[0].state, *states, cells[-1].state]
+        coords, states = ring_records.splice(
+            self.rings, x, coords, states,
+            lambda t: self._region_state(self._region_id_at(x, t * (1.0 - 1e-12))))
         end = self.scene.left if x == 0.0 else self.scene.right if x == self.scene.length \
             else None
         if end is not None:

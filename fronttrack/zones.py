@@ -32,7 +32,7 @@ import numpy as np
 from characteristics import lattice as moc
 from materials import State
 
-from . import interactions, spall
+from . import fragment, interactions, spall
 from .fronts import MIXED, Front, Region
 from .kinds import BoundaryKind, EventKind, FrontKind
 from .patch import LatticePatch
@@ -318,8 +318,9 @@ def _end(engine, front: Front, side: str, t: float, table):
         return moc.Reflector(front.x0, "join", 0.0, join=join), horizon
     if front.kind == FrontKind.GAP:
         # the face across the gap keeps its velocity until a wave reaches it
-        far = front.prev.region_right if side == "left" else front.region_right
-        gap = (far.state.u, front.gap_width, front.gap_time)
+        u_far, steady = fragment.far_face(engine, front, side, t)  # a ring's: closed form
+        horizon = min(horizon, steady)
+        gap = (u_far, front.gap_width, front.gap_time)
         return moc.Reflector(front.x0, "stress", 0.0, gap=gap), horizon
     return moc.Bound(front.x0, front.t0, front.speed), horizon
 

@@ -32,6 +32,7 @@ from shapely.ops import unary_union
 from ..numbering import region_numbers, xt_limits
 from .labels import PageScale, place_labels
 from .placed import Placed
+from .rings import draw_rings
 from .stress_shading import shade_regions
 from .style import LABEL_FONTSIZE, MM, T_LABEL, X_EULER_LABEL, X_LABEL, title_of
 from .xt_annotations import draw_key, draw_layer_names, draw_spalls
@@ -87,6 +88,8 @@ def plot_xt(solution, ax=None, shade=True, numbers=True, eulerian=False, view=No
     ax.set_ylabel(T_LABEL)
     bar = shade_regions(ax, solution, view.polygons) if shade else None
     draw_waves(ax, solution, view)
+    if not eulerian:  # a fragment that rang in closed form: a hatched band
+        draw_rings(ax, solution)
     obstacles = [*draw_sites(ax, view), draw_layer_names(ax, view), *draw_spalls(ax, view)]
     rows = draw_key(ax, view)
     what = "Eulerian x–t diagram" if eulerian else "X–t diagram"
