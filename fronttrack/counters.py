@@ -40,7 +40,9 @@ class Counters:
     (``materials.riemann.release_target``); ``ringing``: one entry per ringing layer
     whose remaining echoes were replaced by their limit (``fronttrack.ringing``);
     ``neglect_cost``: the sum of the bounds (J/m^2) on the energy the neglected entropy
-    contacts that could make energy may have moved (``fronttrack.neglect``).
+    contacts that could make energy may have moved (``fronttrack.neglect``), and
+    ``history_cost`` the part of it spent on contacts whose yield offset was above the
+    negligible stress (plastic history forgotten; held to one budget for their sum).
     """
 
     events: int = 0
@@ -65,6 +67,7 @@ class Counters:
     release_floors: dict[str, tuple[float, int]] = field(default_factory=dict)
     ringing: list[dict] = field(default_factory=list)
     neglect_cost: float = 0.0
+    history_cost: float = 0.0
 
     def note_release_floor(self, name: str, stress: float) -> None:
         """Count a face of ``name`` that released only down to ``stress`` (Pa)."""

@@ -445,16 +445,17 @@ class FinitePlastic(Material):
         curve_r = FinitePlasticWaveCurve(self, right, RIGHT)
         c_l, c_r = curve_l.head_speed, curve_r.head_speed
         acoustic = abs(amplitude) * abs(c_l - c_r) / (c_l + c_r)
-        if not math.isfinite(self.yield_strength):
-            return acoustic
-        pairs = [(x, y) for x, y in ((curve_l.yield_low, curve_r.yield_low),
-                                     (curve_l.yield_high, curve_r.yield_high))
-                 if math.isfinite(x) and math.isfinite(y)]
-        offset = max((abs(x - y) for x, y in pairs), default=0.0)
+        offset = _yield_offset(curve_l, curve_r)
         if offset == 0.0:
             return acoustic
         contrast = max(self.plastic_contrast(curve) for curve in (curve_l, curve_r))
         return acoustic + contrast * min(abs(amplitude), offset)
+
+    def yield_offset(self, left: State, right: State) -> float:
+        """The larger of the offsets (Pa) of the two states' loading and unloading yield
+        stresses (``yield_high``, ``yield_low`` of their wave curves)."""
+        return _yield_offset(FinitePlasticWaveCurve(self, left, RIGHT),
+                             FinitePlasticWaveCurve(self, right, RIGHT))
 
     def plastic_contrast(self, curve: FinitePlasticWaveCurve) -> float:
         """``(C_e / C_p - 1) / 2`` over the elastic ranges of ``curve`` (dimensionless):
@@ -470,6 +471,14 @@ class FinitePlastic(Material):
             c_e = max(c_e, self.elastic_speed(knee.v, e_h))
             c_p = min(c_p, self.plastic_speed(knee.v, e_h, deviator))
         return 0.5 * (c_e / c_p - 1.0) if math.isfinite(c_p) else 0.0
+
+
+def _yield_offset(curve_l: FinitePlasticWaveCurve, curve_r: FinitePlasticWaveCurve) -> float:
+    """The larger offset (Pa) of the finite yield stresses of two wave curves (0 when the
+    solid never yields)."""
+    pairs = ((curve_l.yield_low, curve_r.yield_low), (curve_l.yield_high, curve_r.yield_high))
+    return max((abs(x - y) for x, y in pairs if math.isfinite(x) and math.isfinite(y)),
+               default=0.0)
 
 
 def _root(c2: float, name: str, v: float) -> float:
