@@ -13,12 +13,16 @@ balances and the records against a run that keeps ten times weaker contacts.
 from __future__ import annotations
 
 import dataclasses
+import math
 import random
+from types import SimpleNamespace
 
 import pytest
 from random_scenes import strength_stack_scene
 
 import fronttrack as ft
+from fronttrack import neglect
+from fronttrack.counters import Counters
 from materials import FinitePlastic, solve_contact
 from materials.finite_plastic import FinitePlasticWaveCurve
 from materials.state import LEFT, RIGHT
@@ -120,3 +124,17 @@ def test_a_strength_stack_without_its_weak_contacts_keeps_its_records():
                                     (inside, "sigma", report["stress_tolerance"])):
         a, b = default.history(at), tighter.history(at)
         assert a.l1_distance(b, quantity) / scene.t_end <= tolerance
+
+
+def test_contacts_with_plastic_history_share_one_budget():
+    """A neglected contact that carries plastic history is held, with all such contacts
+    before it, to one budget for the sum of their costs; any other contact only to the
+    budget for itself (``fronttrack.neglect.affordable``)."""
+    engine = SimpleNamespace(counters=Counters(),
+                             neglect_budget=neglect.NeglectBudget(limit=10.0, refresh=math.inf))
+    assert neglect.affordable(engine, 6.0, 0.0, history=True)
+    assert not neglect.affordable(engine, 6.0, 0.0, history=True)   # 12 J/m^2 > 10
+    assert neglect.affordable(engine, 6.0, 0.0)                     # on its own: 6 <= 10
+    assert neglect.affordable(engine, 4.0, 0.0, history=True)       # 6 + 4 <= 10
+    assert engine.counters.history_cost == 10.0
+    assert engine.counters.neglect_cost == 16.0
