@@ -42,7 +42,9 @@ class Counters:
     ``fragments``: one entry per free fragment whose ringing went on in closed form
     (``fronttrack.fragment``);
     ``neglect_cost``: the sum of the bounds (J/m^2) on the energy the neglected entropy
-    contacts that could make energy may have moved (``fronttrack.neglect``).
+    contacts that could make energy may have moved (``fronttrack.neglect``), and
+    ``history_cost`` the part of it spent on contacts whose yield offset was above the
+    negligible stress (plastic history forgotten; held to one budget for their sum).
     """
 
     events: int = 0
@@ -68,6 +70,7 @@ class Counters:
     ringing: list[dict] = field(default_factory=list)
     fragments: list[dict] = field(default_factory=list)
     neglect_cost: float = 0.0
+    history_cost: float = 0.0
 
     def note_release_floor(self, name: str, stress: float) -> None:
         """Count a face of ``name`` that released only down to ``stress`` (Pa)."""

@@ -497,7 +497,8 @@ class Engine:
             keep = (material.contact_reflection(left, right, res.stress_scale) > res.negligible
                     or material.rho0 * abs(left.e - right.e) > res.negligible
                     or not neglect.affordable(self, neglect.neglect_cost(
-                        self, material, group, x, left, right, t), t))
+                        self, material, group, x, left, right, t), t,
+                        history=material.yield_offset(left, right) > res.negligible))
         if keep and _contact_within(group, x, self.acc.contact_resolution):
             keep = False
             counters.unresolved_contacts += 1

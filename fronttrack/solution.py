@@ -235,6 +235,7 @@ class Solution:
             "neglected_entropy_contacts": counters.neglected_contacts,
             "neglected_contact_energy": counters.neglected_contact_energy,
             "neglected_contact_cost": counters.neglect_cost,
+            "neglected_history_cost": counters.history_cost,
             "dropped_wave_cost": dropped.cost(engine),
             "cavitations": counters.cavitations,
             "release_floors": {name: {"stress": stress, "faces": count}

@@ -184,6 +184,12 @@ class Material(ABC):
         ``d sigma / (rho0 C_L) = -rho0 C_L dv``.
         """
 
+    def yield_offset(self, left: State, right: State) -> float:
+        """How far apart (Pa) the yield stresses of two states of this material at equal
+        stress lie: the plastic history a contact between them carries.  A material
+        without strength has none: 0."""
+        return 0.0
+
     def contact_reflection(self, left: State, right: State, amplitude: float) -> float:
         """Stress (Pa) a wave of ``amplitude`` (Pa) reflects from a contact between two
         states of this material at equal stress and velocity (an entropy jump).

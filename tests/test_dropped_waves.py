@@ -39,6 +39,10 @@ def test_an_echo_dropped_where_a_strong_shock_crosses_it_creates_no_energy(monke
     assert abs(balance["energy_error"]) <= balance["promised"]
     assert balance["momentum_error"] <= balance["promised"]
     monkeypatch.setattr(dropped, "_must_keep", lambda *args: False)
+    # the echo comes from a plastic-strain contact in the foil, kept when a contact's
+    # reflection was taken to be its whole yield offset (a plastic contrast of 1); the
+    # bound of FinitePlastic.contact_reflection drops it, and with it the echo
+    monkeypatch.setattr(FinitePlastic, "plastic_contrast", lambda self, curve: 1.0)
     before = run(_campaign_380()).accuracy_report["balance"]
     assert before["energy_error"] > before["promised"]
 
