@@ -83,7 +83,7 @@ def discretise_fan(fan: Fan, material, max_step: float,
     cells = max(len(rays) - 1, 1)
     if not worst > move:
         return rays
-    split = min(REFINE, math.ceil(worst / move), REFINED_CELLS // cells)
+    split = min(math.ceil(min(worst / move, REFINE)), REFINED_CELLS // cells)
     if split < 2:
         return rays
     finer = min(max_step, abs(fan.behind.sigma - fan.ahead.sigma) / cells) / split
