@@ -21,9 +21,7 @@ the L1 record error four to ten times larger. Queries read the solution continuo
 interpolating the invariants between characteristics (``characteristics.reconstruct``).
 
 A wave weaker than one step is a single ray from ``s_0`` to ``s_1`` at the speed of
-the middle state.  An expansion characteristic creates energy, third order in its
-step; a new fan whose characteristics would create too much is cut finer
-(``characteristics.ray_speed``).
+the middle state.
 """
 
 from __future__ import annotations
@@ -36,7 +34,6 @@ import numpy as np
 from materials import Fan, State
 
 from .isentrope import Isentrope
-from .ray_speed import creation
 
 
 @dataclass(frozen=True, slots=True)
@@ -65,46 +62,8 @@ def cell_count(jump: float, max_step: float) -> int:
 
 def discretise_fan(fan: Fan, material, max_step: float,
                    table: Isentrope | None = None,
-                   max_velocity_step: float = math.inf,
-                   move: float = math.inf) -> list[Characteristic]:
+                   max_velocity_step: float = math.inf) -> list[Characteristic]:
     """The fan as characteristics, head first (see the module docstring).
-
-    A fan whose characteristics create energy beyond ``move`` (relative to the energy
-    they carry: the fraction of their speed they would have to move to create none,
-    ``ray_speed.creation``; ``ray_speed.fan_move``) is cut into up to ``REFINE`` times as
-    many cells.  The
-    move an inner characteristic needs is second order in its step; the head and the
-    tail carry the end states (the fan's exact head and tail speeds) with a half step
-    behind them, so theirs is first order (LiF released into 6.4 GPa of tension: 7.5,
-    4.3, 2.8, 2.1 % at 1, 2, 3, 4 cells, the head the largest): ``m`` times as many
-    cells need at most ``1/m`` of the move.
-    """
-    rays, worst = _discretise(fan, material, max_step, table, max_velocity_step)
-    cells = max(len(rays) - 1, 1)
-    if not worst > move:
-        return rays
-    split = min(math.ceil(min(worst / move, REFINE)), REFINED_CELLS // cells)
-    if split < 2:
-        return rays
-    finer = min(max_step, abs(fan.behind.sigma - fan.ahead.sigma) / cells) / split
-    return _discretise(fan, material, finer, table, max_velocity_step / split)[0]
-
-
-REFINE = 4
-"""Most cells a fan is cut into, as a multiple of what its steps ask, so that its
-characteristics need move by no more than ``ray_speed.fan_move`` to create no energy."""
-
-REFINED_CELLS = 32
-"""Nor beyond this many cells: a gas fan to vacuum, whose tail speed falls to zero,
-needs a move near vacuum however finely it is cut (campaign seed 826: a fan of 43 cells
-cut into 198 in a thin gas layer piled up 1 500 events in 30 ps)."""
-
-
-def _discretise(fan: Fan, material, max_step: float, table: Isentrope | None,
-                max_velocity_step: float) -> tuple[list[Characteristic], float]:
-    """The fan's characteristics at the steps asked (``discretise_fan``) and the largest
-    move (fraction of its speed) one of them needs to create no energy
-    (``ray_speed.creation``).
 
     No cell spans more than ``max_step`` (Pa) of stress nor ``max_velocity_step`` (m/s)
     of particle velocity.  With ``table`` (the isentrope of ``fan.ahead``) the interior
@@ -139,29 +98,21 @@ def _discretise(fan: Fan, material, max_step: float, table: Isentrope | None,
                         else [material.sound_speed(s.v, s.e) for s in inner])
     d = fan.direction
     head, tail = fan.head_speed, fan.tail_speed
-    rho0 = material.rho0
     if n == 1:
         # one ray: the whole jump at the speed of the middle state
-        return ([Characteristic(state=inner[0], speed=d * abs(inner_speeds[0]), ahead=a,
-                                behind=b, index=0, count=1)],
-                creation(rho0, d, _triple(a), _triple(b), inner_speeds[0]))
+        return [Characteristic(state=inner[0], speed=d * abs(inner_speeds[0]),
+                               ahead=a, behind=b, index=0, count=1)]
     # states[j] and speeds[j] at half step j (j = 0 ... 2n): even j on characteristics,
     # odd j in cells
     states = [a, *inner, b]
     speeds = [abs(head), *(abs(c) for c in inner_speeds), abs(tail)]
-    rays, worst = [], 0.0
+    rays = []
     for k in range(n + 1):
         i_ahead, i_behind = max(2 * k - 1, 0), min(2 * k + 1, 2 * n)
-        ahead, behind = _triple(states[i_ahead]), _triple(states[i_behind])
-        worst = max(worst, creation(rho0, d, ahead, behind, speeds[2 * k]))
-        rays.append(Characteristic(state=states[2 * k], speed=d * speeds[2 * k],
-                                   ahead=states[i_ahead],
-                                   behind=states[i_behind], index=k, count=n + 1))
-    return rays, worst
-
-
-def _triple(state: State) -> tuple[float, float, float]:
-    return state.sigma, state.u, state.e
+        ahead, behind = states[i_ahead], states[i_behind]
+        rays.append(Characteristic(state=states[2 * k], speed=d * speeds[2 * k], ahead=ahead,
+                                   behind=behind, index=k, count=n + 1))
+    return rays
 
 
 SPEED_ROUNDING = 1e-12

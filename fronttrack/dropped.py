@@ -52,7 +52,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
-from characteristics.ray_speed import energy_residual
+from characteristics.ray_energy import energy_residual
 from materials import Fan
 
 from . import balance

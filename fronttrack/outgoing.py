@@ -17,7 +17,6 @@ import math
 from dataclasses import dataclass
 
 from characteristics.products_table import fan_table
-from characteristics.ray_speed import fan_move
 from characteristics.simple_waves import discretise_fan, diverging
 from materials import Fan, State, StateOutOfRangeError
 
@@ -62,8 +61,7 @@ def wave_fronts(engine, waves, material, t: float, x: float, incoming,
     ``None`` when the family is dropped (``drop``: weaker than the negligible stress and
     velocity, and affordable, as ``fronttrack.dropped.drops`` decides).  A single-ray
     wave leaving a ray's event keeps that ray's fan, so the rays of a fan stay one fan
-    through the events that continue them; only a wave no ray came in to make is cut
-    finer where its rays would create energy (``characteristics.ray_speed``).  ``site``: the
+    through the events that continue them.  ``site``: the
     event's site, if any (its kind decides the waves' ``lineage``).
     """
     if not waves:
@@ -78,8 +76,7 @@ def wave_fronts(engine, waves, material, t: float, x: float, incoming,
     specs = []
     for wave in waves:
         if isinstance(wave, Fan):
-            specs += _fan_fronts(engine, wave, material, t, x, parent, direction, origin,
-                                 new=not any(f.kind == FrontKind.RAY for f in incoming))
+            specs += _fan_fronts(engine, wave, material, t, x, parent, direction, origin)
             continue
         ray = _weak_shock_ray(engine, wave, material, t, x, parent, direction, origin)
         if ray is not None:
@@ -140,7 +137,7 @@ def _weak_shock_ray(engine, shock, material, t, x, parent, direction,
 
 
 def _fan_fronts(engine, fan: Fan, material, t, x, parent, direction,
-                origin, new: bool) -> list[WaveSpec]:
+                origin) -> list[WaveSpec]:
     # a one-ray wave uses the table of its isentrope if there is one already; a family
     # of several characteristics (which lattices will cross) builds one
     res = engine.resolution
@@ -155,15 +152,12 @@ def _fan_fronts(engine, fan: Fan, material, t, x, parent, direction,
     # detonation products: their own table places the characteristics (equal steps of
     # stress and velocity towards vacuum); the cells keep none (no lattice, no reading)
     own = fan_table(fan) if table is None and res.release == "isentrope" else None
-    move = fan_move(res.step, res.stress_scale) if new else math.inf
-    characteristics = discretise_fan(fan, material, res.step, table or own, res.velocity_step,
-                                     move)
+    characteristics = discretise_fan(fan, material, res.step, table or own, res.velocity_step)
     if table is not None and not diverging(characteristics):
         # the table's isentrope is too far from the fan's own for its steps: the curve's
         # exact states (characteristics.simple_waves.diverging)
         table = None
-        characteristics = discretise_fan(fan, material, res.step, None, res.velocity_step,
-                                         move)
+        characteristics = discretise_fan(fan, material, res.step, None, res.velocity_step)
     if len(characteristics) == 1 and parent is not None and parent.kind == FrontKind.RAY:
         fan_id, index, count = parent.fan, parent.ray_index, parent.ray_count
     else:

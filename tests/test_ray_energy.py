@@ -1,19 +1,16 @@
-"""The energy a ray creates, and fans cut finer so that it stays small
-(``characteristics.ray_speed``).
+"""The energy a ray creates (``characteristics.ray_energy``).
 
 A ray is a jump between two cells of one isentrope.  At the characteristic speed of its
 middle state an expansion ray creates energy, third order in its step; a compression ray
 loses it.  The tests take the states from the exact wave curve of LiF (Mie-Grueneisen,
 library parameters) and the residuals from the jump conditions, independently of the
-engine; then the two campaign seeds that created energy, inline.
+engine; then the two campaign seeds that still create energy, inline, as strict xfails.
 """
 
 
 import pytest
 
-from characteristics import simple_waves
-from characteristics.ray_speed import creation, energy_residual, fan_move
-from characteristics.simple_waves import discretise_fan
+from characteristics.ray_energy import energy_residual
 from fronttrack.runner import run
 from fronttrack.scene import Accuracy, Boundary, Layer, Scene
 from materials import LEFT, RIGHT, IdealGas
@@ -57,7 +54,6 @@ def test_an_expansion_ray_creates_energy_third_order_in_its_step(direction):
         assert energy > 0.0
         created.append(energy)
         momenta.append(abs(momentum))
-        assert creation(LIF.rho0, direction, ahead, behind, speeds[1]) > 0.0
         # no speed is both momentum-exact and energy-conserving: at the chord speed
         # (R_p = 0, inside the band of the two cells' speeds) it still creates
         chord = (behind[0] - ahead[0]) / (LIF.rho0 * (behind[1] - ahead[1]))
@@ -76,41 +72,7 @@ def test_a_compression_ray_loses_energy_third_order_in_its_step(direction):
         ahead, behind, speeds = _ray(direction, jump, expansion=False)
         losses.append(_residuals(direction, ahead, behind, direction * speeds[1])[0])
         assert losses[-1] < 0.0
-        assert creation(LIF.rho0, direction, ahead, behind, speeds[1]) == 0.0
     assert losses[0] / losses[1] == pytest.approx(8.0, rel=0.15)
-
-
-def test_a_fan_whose_rays_create_too_much_is_cut_finer():
-    # seed 180's rays: LiF released from rest at zero stress into 6.4 GPa of tension, as
-    # one ray; the sound speed falls steeply in tension
-    (fan,) = LIF.wave_curve(LIF.reference_state(), RIGHT).waves(-6.4e9)
-    step = 6.4e9
-
-    def created(rays):  # relative to what each carries, and W/m^2 in all
-        cells = [(_triple(r.ahead), _triple(r.behind), r.speed) for r in rays]
-        return ([creation(LIF.rho0, 1, a, b, c) for a, b, c in cells],
-                sum(max(_residuals(1, a, b, c)[0], 0.0) for a, b, c in cells))
-
-    (one,) = discretise_fan(fan, LIF, step)  # no bound: as the steps ask
-    (before,), rate = created([one])
-    assert before == pytest.approx(0.0745, abs=5e-4)
-    # bounded at 2 %: four times as many cells (the most); the inner characteristics
-    # then create less than 2 %, the head (first order in its half step) a quarter of
-    # what the single ray did, and the fan a fifth as much energy
-    fine = discretise_fan(fan, LIF, step, move=0.02)
-    assert len(fine) == simple_waves.REFINE + 1
-    (head, *inner), fine_rate = created(fine)
-    assert max(inner) <= 0.02
-    assert head == pytest.approx(before / 4.0, rel=0.15)
-    assert fine_rate < rate / 5.0
-    # a bound the ray meets leaves it whole
-    assert len(discretise_fan(fan, LIF, step, move=0.08)) == 1
-
-
-def test_the_bound_on_fans_is_proportional_to_the_step():
-    # so that the error estimate's run at half the step is cut finer alike
-    assert fan_move(1.5e9, 12e9) == pytest.approx(2.0 * fan_move(0.75e9, 12e9), rel=1e-15)
-    assert fan_move(1.5e9, 12e9) == pytest.approx(0.02)  # eight characteristics per fan
 
 
 def _campaign_180() -> Scene:
@@ -135,18 +97,15 @@ def _campaign_327() -> Scene:
                  right=Boundary("free"), accuracy=Accuracy(rays_per_fan=8))
 
 
-@pytest.mark.xfail(strict=True, reason="+14.7 %: at two rays per fan its 6.4 GPa rays "
-                   "create 7.5 % of what they carry, within the bound at that step (8 %)")
+@pytest.mark.xfail(strict=True, reason="+14.7 %: at two rays per fan, expansion rays of up "
+                   "to 8.9 GPa in a ringing 10 um LiF layer create energy at each crossing")
 def test_campaign_180_a_ringing_lif_layer_creates_no_energy():
     balance = run(_campaign_180()).accuracy_report["balance"]
     assert balance["energy_error"] <= 0.0
 
 
-def test_campaign_327_a_gas_fan_to_vacuum_keeps_its_promise(monkeypatch):
+@pytest.mark.xfail(strict=True, reason="+0.63 % (promise 0.2 %): the expansion rays of "
+                   "the gas fan to vacuum, second order in rays")
+def test_campaign_327_a_gas_fan_to_vacuum_keeps_its_promise():
     balance = run(_campaign_327()).accuracy_report["balance"]
-    # +0.098 % is left (promise 0.2 %): the fan to vacuum is cut three times finer
     assert balance["energy_error"] <= balance["promised"]
-    assert balance["momentum_error"] <= balance["promised"]
-    monkeypatch.setattr(simple_waves, "REFINE", 1)
-    before = run(_campaign_327()).accuracy_report["balance"]
-    assert before["energy_error"] > before["promised"]  # +0.63 %

@@ -1,4 +1,4 @@
-"""The energy a ray creates, and how finely a fan is cut so that its rays create little.
+"""The energy a ray creates: the flux residual of a jump, and why a ray creates energy.
 
 A ray stands for a segment of a simple wave: a jump between two cells ``a`` (ahead) and
 ``b`` (behind) that lie on one isentrope.  Moving at Lagrangian speed ``U`` between its
@@ -51,40 +51,23 @@ error of the pressure twenty times larger); moving the lattices' characteristics
 inside a wave where ``sigma = +-Z u`` (``Z = rho0 C``), which makes ``U_E``
 ill-conditioned there.
 
-What is done instead: a new fan whose characteristics create energy beyond ``fan_move``
-(relative to the energy they carry, ``creation``) is cut finer
-(``characteristics.simple_waves.discretise_fan``).  An inner characteristic's share
-falls as ``1/m^2`` with ``m`` times as many cells; the head and the tail carry the end
-states at the fan's exact head and tail speeds with a half step beside them, so theirs
-falls as ``1/m``.
-
-Measured (``benchmarks/campaign.py``'s seeds, balances relative): seed 327, a gas fan to
-vacuum at eight rays, +0.63 % -> +0.098 % (promise 0.2 %; 1 713 -> 1 807 events).  Seed
-180 is unchanged, +14.7 % (promise 2.5 %): at two rays per fan its 6.4 GPa rays create
-7.5 % of what they carry, within the bound at that step (8 %); a bound low enough to cut
-them four times finer (they then lose 3.6 %) also cuts the demo's fans (803 instead of
-523 events, twice the time) and, fixed rather than proportional to the step, made the
-error estimate's run at half the step identical to the run it checks.
+What was tried instead, and not kept: cutting a new fan finer where its characteristics
+create more than a bound proportional to the step (relative to the energy they carry;
+an inner characteristic's share falls as ``1/m^2`` with ``m`` times as many cells, the
+head's and tail's as ``1/m``, since they carry the end states at the fan's exact head
+and tail speeds).  It took campaign seed 327 (a gas fan to vacuum at eight rays) from
++0.63 % to +0.098 % (promise 0.2 %) and left the demo unchanged, but it multiplied
+events where fans reach an equation of state's end: campaign seed 8 145 -> 1 304
+events, the cavitation scene of ``tests/test_conservation_bugs.py`` 699 -> more than
+3 000, seed 826 1 500 events in 30 ps until capped.  Seed 180 needs its fans cut four
+times finer at two rays per fan (it then loses 3.6 %); a bound that low also cut the
+demo's fans (803 instead of 523 events, twice the time), and a fixed bound (not
+proportional to the step) made the error estimate's run at half the step identical to
+the run it checks.  So the rays of both seeds still create energy
+(``tests/test_ray_energy.py``, strict xfails).
 """
 
 from __future__ import annotations
-
-import math
-
-FAN_MOVE = 0.16
-"""A new fan is cut finer where a characteristic would need a move beyond this times the
-characteristic step over the stress scale (``fan_move``): 2 % at the default eight
-characteristics per fan, 8 % at two."""
-
-
-def fan_move(step: float, scale: float) -> float:
-    """The move (fraction of a characteristic's speed) beyond which a new fan is cut
-    finer, for a run of characteristic ``step`` and stress ``scale`` (Pa).  It is
-    proportional to the step, as the move a fan's head needs is, so that a run at half
-    the step (the error estimate, ``fronttrack.error_estimate``) is cut finer in the
-    same proportion: a fixed bound cut a fan of Cu at four characteristics to eight and
-    left it at eight in the run at half the step, an estimate of zero."""
-    return FAN_MOVE * step / scale if scale > 0.0 and math.isfinite(step) else math.inf
 
 
 def energy_residual(rho0: float, speed: float, left: tuple, right: tuple) -> float:
@@ -93,18 +76,3 @@ def energy_residual(rho0: float, speed: float, left: tuple, right: tuple) -> flo
     ``rho0 U (E_l - E_r) - (sigma_l u_l - sigma_r u_r)`` (``rho0`` in kg/m^3)."""
     jump = (left[2] + 0.5 * left[1] * left[1]) - (right[2] + 0.5 * right[1] * right[1])
     return rho0 * speed * jump - (left[0] * left[1] - right[0] * right[1])
-
-
-def creation(rho0: float, direction: int, ahead: tuple, behind: tuple, c_own: float
-             ) -> float:
-    """The energy a ray at its characteristic speed ``c_own`` (m/s) creates, relative to
-    the energy it carries, ``rho0 C (|Delta e| + |u_bar Delta u|)`` (zero where it loses
-    energy): about the fraction of ``C`` its speed would have to move to create none
-    (module docstring)."""
-    left, right = (behind, ahead) if direction > 0 else (ahead, behind)
-    residual = energy_residual(rho0, direction * abs(c_own), left, right)
-    if not residual > 0.0:
-        return 0.0
-    carried = rho0 * abs(c_own) * (abs(left[2] - right[2])
-                                   + abs(0.5 * (left[1] + right[1]) * (left[1] - right[1])))
-    return residual / carried if carried > 0.0 else math.inf
