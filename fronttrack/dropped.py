@@ -52,6 +52,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
+from characteristics.ray_energy import energy_residual
 from materials import Fan
 
 from . import balance
@@ -147,12 +148,8 @@ def creation_rate(rho0: float, speed: float, old, star, direction: int) -> float
     ``star``: the flux residual ``rho0 U (E_l - E_r) - (sigma_l u_l - sigma_r u_r)`` of
     the jump from ``old`` to ``star`` (``rho0`` in kg/m^3)."""
     left, right = (old, star) if direction < 0 else (star, old)
-
-    def energy(s):
-        return s.e + 0.5 * s.u * s.u
-
-    return (rho0 * speed * (energy(left) - energy(right))
-            - (left.sigma * left.u - right.sigma * right.u))
+    return energy_residual(rho0, speed, (left.sigma, left.u, left.e),
+                           (right.sigma, right.u, right.e))
 
 
 def cost(engine) -> float:
