@@ -241,8 +241,8 @@ class HydrodynamicWaveCurve(StressRange):
         else:
             lo, hi = a.v, mat.volume_range()[1] * (1.0 - 1e-12)
             if math.isinf(hi):
-                if sigma <= 0.0 and not self._on_hugoniot(sigma):
-                    return math.inf  # a gas expanding to vacuum along its isentrope
+                if sigma < 0.0 or (sigma == 0.0 and not self._on_hugoniot(sigma)):
+                    return math.inf  # a gas expanding to vacuum: it carries no tension
                 # along its Hugoniot a gas reaches zero stress at a finite volume,
                 # v_a + 2 e_a / sigma_a (an ideal gas: v_a (gamma + 1) / (gamma - 1))
                 hi = 2.0 * a.v

@@ -25,6 +25,7 @@ from materials import (
     LinearElastic,
     NoSolutionError,
     Shock,
+    State,
     solve_boundary,
     solve_contact,
 )
@@ -463,6 +464,33 @@ def test_bond_fails_only_beyond_its_strength(copper, aluminium, factor, opens):
         assert sol.left_star.sigma == sol.right_star.sigma == 0.0
     else:
         assert sol.left_star.sigma == pytest.approx(bonded, rel=1e-12)
+
+
+def test_gas_contact_with_hugoniot_release_pulled_apart_stays_on_its_curves():
+    """Campaign seed 141: two states of one gas (gamma 1.2) moving apart at 1 272 m/s,
+    Hugoniot release, a contact holding 33 MPa of tension.  A gas carries no tension, so
+    below zero stress its curve is the vacuum (``v = inf``) and ``phi`` jumps to -inf;
+    the root lies just above the right gas's stress (phi(16 MPa) < 0 < phi(30 MPa)).  When the
+    Hugoniot's zero-stress end became finite, negative stresses were taken on the
+    ideal-gas Hugoniot beyond it, and the solver returned an infinite stress, after which
+    the engine looped for ever."""
+    gas = IdealGas("M3", 1.2, rho0=42.20705669825478)
+    left = State(sigma=162388596.96560857, u=1828.4307221226054, v=0.002629842380058222,
+                 e=2135282.071691759)
+    right = State(sigma=16425109.44185581, u=3100.642008576111, v=0.013840227157909874,
+                  e=1136636.22884408)
+    sol = solve_contact(gas, left, gas, right, 33218445.9755857, "hugoniot")
+    assert not sol.separated
+    assert 16e6 < sol.bonded_sigma < 30e6
+    # one velocity on both sides of the contact, to the rounding of the root search
+    assert sol.left_star.u == pytest.approx(sol.right_star.u, abs=1e-9 * right.u)
+    # the left gas is released to it, the right one (at 16.4 MPa) slightly compressed
+    assert sol.left_star.v > left.v and sol.right_star.v < right.v
+    for star, ahead in ((sol.left_star, left), (sol.right_star, right)):
+        assert math.isfinite(star.v)
+        # the Rayleigh line of the release jump: (u - u_a)^2 = (sigma_a - sigma)(v - v_a)
+        assert (star.u - ahead.u) ** 2 == pytest.approx(
+            (ahead.sigma - star.sigma) * (star.v - ahead.v), rel=1e-10)
 
 
 def test_gas_cannot_pull_vacuum_forms():
