@@ -241,13 +241,22 @@ class HydrodynamicWaveCurve(StressRange):
         else:
             lo, hi = a.v, mat.volume_range()[1] * (1.0 - 1e-12)
             if math.isinf(hi):
-                if sigma < 0.0 or (sigma == 0.0 and not self._on_hugoniot(sigma)):
-                    return math.inf  # a gas expanding to vacuum: it carries no tension
-                # along its Hugoniot a gas reaches zero stress at a finite volume,
-                # v_a + 2 e_a / sigma_a (an ideal gas: v_a (gamma + 1) / (gamma - 1))
+                if self._on_hugoniot(sigma):
+                    # along its Hugoniot a gas reaches zero stress at a finite volume,
+                    # v_a + 2 e_a / sigma_a (an ideal gas: v_a (gamma + 1) / (gamma - 1)),
+                    # and carries no tension: below zero it is out of range, and a
+                    # contact pulled further opens (vacuum forms, ``materials.riemann``)
+                    self.check_stress(sigma)
+                elif sigma <= 0.0:
+                    return math.inf  # a gas expanding to vacuum along its isentrope
                 hi = 2.0 * a.v
                 while residual(hi)[0] > 0.0:
                     hi *= 4.0
+                    if math.isinf(hi):  # a state off its equation of state (e <= 0)
+                        raise StateOutOfRangeError(
+                            f"{mat.name}: no volume releases the state at "
+                            f"{a.sigma / 1e9:.6g} GPa (e = {a.e:.6g} J/kg) to "
+                            f"{sigma / 1e9:.6g} GPa")
         # First guess: a Newton step from the last point solved on the same branch (a
         # root search on the curve evaluates converging stresses), else the acoustic
         # one, dv = -(dsigma) / (rho0 C)^2.

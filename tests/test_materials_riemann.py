@@ -493,6 +493,26 @@ def test_gas_contact_with_hugoniot_release_pulled_apart_stays_on_its_curves():
             (ahead.sigma - star.sigma) * (star.v - ahead.v), rel=1e-10)
 
 
+def test_gas_pulled_from_a_solid_with_hugoniot_release_separates_at_zero_stress():
+    """Campaign seed 467: shocked gas (309 MPa) moving off tantalum at 3 631 m/s, Hugoniot
+    release, an unbonded contact (4.8 MPa strength).  Along its Hugoniot the gas gains at
+    most sqrt(sigma_a (v0 - v_a)) = 2 310 m/s reaching zero stress at v0 = v_a (gamma +
+    1) / (gamma - 1): the contact opens, the gas there at zero stress and v0.  Before, the
+    solver took the gas below zero stress as vacuum at u = +inf and returned that."""
+    gas = IdealGas("M0", 1.4, rho0=1.0)
+    tantalum = LinearElastic("Ta", 16650.0, 3400.0)
+    left = State(sigma=309042208.6600003, u=-3480.591692956286, v=0.0017270305905210117,
+                 e=309042208.6600003 * 0.0017270305905210117 / 0.4)
+    right = State(sigma=0.0, u=150.4405550869993, v=1.0 / 16650.0, e=0.0)
+    sol = solve_contact(gas, left, tantalum, right, 4832442.780091816, "hugoniot")
+    assert sol.separated and sol.bonded_sigma == 0.0
+    v0 = left.v * 2.4 / 0.4
+    assert sol.left_star.v == pytest.approx(v0, rel=1e-9)
+    assert sol.left_star.u == pytest.approx(left.u + math.sqrt(left.sigma * (v0 - left.v)),
+                                            rel=1e-9)
+    assert sol.right_star.u == pytest.approx(right.u, abs=1e-9)
+
+
 def test_gas_cannot_pull_vacuum_forms():
     # Toro's pressure-positivity condition violated: two rarefactions to vacuum.
     g = IdealGas("g", 1.4, rho0=1.0)
