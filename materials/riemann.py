@@ -243,8 +243,6 @@ def _upper_bracket(phi, curve_l, curve_r, left, right, guess):
             if math.isnan(value) or math.isinf(trial):  # no float stress closes it
                 raise NoSolutionError("the contact stress is beyond every finite stress")
         except (NoSolutionError, StateOutOfRangeError):
-            if limit is not None:
-                raise
             limit = min(curve_l.sigma_max(), curve_r.sigma_max())
             if math.isnan(limit):
                 raise NoSolutionError("the curves' common top stress is undefined") from None
