@@ -316,7 +316,7 @@ class Engine:
                 interactions.fracture(self, entry[4])
                 continue
             if kind == "mismatch":
-                if not mismatch.is_due(self, entry[4]):
+                if not mismatch.is_due(self, entry[4]) or mismatch.deferred(self, entry[4]):
                     continue
                 front = entry[4].site
                 x, seed = front.position(t), [front]
