@@ -37,7 +37,7 @@ sys.path.insert(0, str(HERE.parent / "tests"))
 
 from random_scenes import campaign_scene  # noqa: E402
 
-from fronttrack import coalesce, dropped, fragment, ringing, zones  # noqa: E402
+from fronttrack import coalesce, dropped, fragment, outgoing, ringing, zones  # noqa: E402
 from fronttrack import engine as engine_module  # noqa: E402
 from fronttrack.runner import run  # noqa: E402
 
@@ -131,18 +131,18 @@ class Attribution:
         self.power = _boundary_power(engine)
 
     def install(self) -> None:
-        process, drops = engine_module.Engine._process, dropped.drops
+        process, wave_fronts = engine_module.Engine._process, outgoing.wave_fronts
         contact, merge = engine_module.Engine._entropy_contact, coalesce._replace
         me = self
 
         def patched_process(engine, seed, t, x, timer=False):
             me.event(engine, t, lambda: process(engine, seed, t, x, timer=timer))
 
-        def patched_drops(*args):
-            dropped_now = drops(*args)
-            if dropped_now:
+        def patched_wave_fronts(*args):
+            specs = wave_fronts(*args)
+            if specs is None:  # the family was dropped (a merge refused keeps both)
                 me.decisions.append("drop")
-            return dropped_now
+            return specs
 
         def patched_contact(engine, left, right, material, t, x, group):
             kept = contact(engine, left, right, material, t, x, group)
@@ -163,7 +163,7 @@ class Attribution:
             return patched
 
         engine_module.Engine._process = patched_process
-        engine_module.dropped.drops = patched_drops
+        engine_module.outgoing.wave_fronts = patched_wave_fronts
         engine_module.Engine._entropy_contact = patched_contact
         coalesce._replace = patched_merge
         zones.try_zone = tagging(zones.try_zone, "lattice")
