@@ -10,13 +10,18 @@ energy per unit area changes at
 
 (``fronttrack.dropped.creation_rate`` of the states beside each front; ``U`` zero for a
 site), which is zero for an exact jump.  The rate of every front is summed over the
-time until the next event, and the live total is compared before and after each event
-(coalescing a strip changes it at once).  Each front is tagged with the decisions of
-the event that made it: ``drop`` (a weak family dropped, ``fronttrack.dropped``),
-``neglect`` (an entropy contact not tracked, ``fronttrack.neglect``), ``coalesce``
-(``fronttrack.coalesce``), ``exact`` (none).  A front keeps its tag while it lives (a
-site lives through many events).  The sum matches the run's energy residual to
-rounding when no lattice or ring-down replaces fronts without an event record.
+time it lived until the next event, and the total is compared before and after each
+event (coalescing a strip changes it at once).  A lattice (``fronttrack.zones``) solves
+ahead of the queue: the fronts it splices start at their own later times, so the total
+counts each front's region energy at its own start (the rate of the front times the
+time between the event and its start), and the change over the event is the energy the
+lattice made.  Each front is tagged with the decisions of the event that made it:
+``drop`` (a weak family dropped, ``fronttrack.dropped``), ``neglect`` (an entropy
+contact not tracked, ``fronttrack.neglect``), ``coalesce`` (``fronttrack.coalesce``),
+``lattice`` (``fronttrack.zones``), ``fragment`` (a free fragment ringing in closed
+form, ``fronttrack.fragment``), ``ring-down`` (``fronttrack.ringing``), ``exact``
+(none).  A front keeps its tag while it lives (a site lives through many events).  The
+sum matches the run's energy residual to rounding.
 """
 
 from __future__ import annotations
@@ -32,26 +37,32 @@ sys.path.insert(0, str(HERE.parent / "tests"))
 
 from random_scenes import campaign_scene  # noqa: E402
 
-from fronttrack import coalesce, dropped  # noqa: E402
+from fronttrack import coalesce, dropped, fragment, outgoing, ringing, zones  # noqa: E402
 from fronttrack import engine as engine_module  # noqa: E402
 from fronttrack.runner import run  # noqa: E402
 
 
-def _live_energy(engine, t: float) -> float:
-    """Total energy (J/m^2) of the live regions at time ``t`` (s)."""
+def _live_energy(engine, t: float, rates) -> float:
+    """Total energy (J/m^2) of the live regions, each front taken at ``t`` (s) or, if
+    it starts later (spliced by a lattice), at its own start: the energy at ``t`` of
+    the fronts extrapolated back, plus each late front's ``rate`` (W/m^2, ``rates``
+    maps front ids to them) times the time to its start.  Regions between fronts
+    extrapolated past each other count with a negative width: the total is linear in
+    the positions."""
     total, front = 0.0, engine.head
     while front is not None and front.next is not None:
         region, width = front.region_right, front.next.position(t) - front.position(t)
-        if region is not None and width > 0.0:
+        if region is not None:
             state = region.state
             total += region.material.rho0 * width * (state.e + 0.5 * state.u * state.u)
+        total += rates.get(front.id, 0.0) * max(front.t0 - t, 0.0)
         front = front.next
     return total
 
 
-def _rates(engine) -> list:
-    """``(front, dE/dt W/m^2)`` of every front whose jump is not exact."""
-    found, front = [], engine.head
+def _rates(engine) -> dict:
+    """``{front id: (front, dE/dt W/m^2)}`` of every front whose jump is not exact."""
+    found, front = {}, engine.head
     while front is not None:
         left = front.prev.region_right if front.prev is not None else None
         right = front.region_right if front.next is not None else None
@@ -61,9 +72,23 @@ def _rates(engine) -> list:
                                          0.0 if front.is_site else front.speed,
                                          right.state, left.state, +1)
             if rate != 0.0:
-                found.append((front, rate))
+                found[front.id] = (front, rate)
         front = front.next
     return found
+
+
+def _boundary_power(engine) -> float:
+    """Work rate (W/m^2) of the boundaries on the live cells beside them, ``sigma u`` of
+    the first cell less that of the last (the run's balance takes it from the cells it
+    recorded there: inside a lattice those are the lattice's, not the cell at its cut)."""
+    first, last = engine.head, engine.head
+    while last.next is not None:
+        last = last.next
+    power = 0.0
+    for region, sign in ((first.region_right, 1.0), (last.prev.region_right, -1.0)):
+        if region is not None:
+            power += sign * region.state.sigma * region.state.u
+    return power
 
 
 class Attribution:
@@ -72,37 +97,52 @@ class Attribution:
     def __init__(self):
         self.by_tag, self.jumps = collections.Counter(), collections.Counter()
         self.by_front, self.info, self.tags = collections.Counter(), {}, {}
-        self.decisions, self.rates, self.last_t, self.newest = [], [], 0.0, 0
+        self.decisions, self.rates, self.last_t, self.newest = [], {}, 0.0, 0
+        self.work, self.power = 0.0, 0.0
+
+    def advance(self, t: float) -> None:
+        """Add each front's rate over the time it lived from the last event to ``t`` (s),
+        and the boundaries' work on the live cells beside them."""
+        self.work += self.power * (t - self.last_t)
+        for front, rate in self.rates.values():
+            tag = self.tags.get(front.id, "initial")
+            energy = rate * max(t - max(self.last_t, front.t0), 0.0)
+            self.by_tag[tag] += energy
+            self.by_front[front.id] += energy
+            self.info[front.id] = (front.kind.value, tag, front.t0, front.x0)
+        self.last_t, self.decisions = t, []
+
+    def event(self, engine, t: float, process) -> None:
+        """Run ``process()``, the event at ``t`` (s), and book the change of the total."""
+        self.advance(t)
+        before = _live_energy(engine, t, {i: r for i, (_, r) in self.rates.items()})
+        process()
+        rates = _rates(engine)
+        tag = "+".join(sorted(set(self.decisions))) or "exact"
+        self.jumps[tag] += _live_energy(engine, t, {i: r for i, (_, r) in rates.items()}) \
+            - before
+        front, newest = engine.head, self.newest
+        while front is not None:
+            if front.id > newest:
+                self.tags.setdefault(front.id, tag)
+                self.newest = max(self.newest, front.id)
+            front = front.next
+        self.rates = rates
+        self.power = _boundary_power(engine)
 
     def install(self) -> None:
-        process, drops = engine_module.Engine._process, dropped.drops
+        process, wave_fronts = engine_module.Engine._process, outgoing.wave_fronts
         contact, merge = engine_module.Engine._entropy_contact, coalesce._replace
         me = self
 
         def patched_process(engine, seed, t, x, timer=False):
-            for front, rate in me.rates:
-                tag = me.tags.get(front.id, "initial")
-                me.by_tag[tag] += rate * (t - me.last_t)
-                me.by_front[front.id] += rate * (t - me.last_t)
-                me.info[front.id] = (front.kind.value, tag, front.t0, front.x0)
-            me.last_t, me.decisions = t, []
-            before = _live_energy(engine, t)
-            process(engine, seed, t, x, timer=timer)
-            tag = "+".join(sorted(set(me.decisions))) or "exact"
-            me.jumps[tag] += _live_energy(engine, t) - before
-            front, newest = engine.head, me.newest
-            while front is not None:
-                if front.id > newest:
-                    me.tags.setdefault(front.id, tag)
-                    me.newest = max(me.newest, front.id)
-                front = front.next
-            me.rates = _rates(engine)
+            me.event(engine, t, lambda: process(engine, seed, t, x, timer=timer))
 
-        def patched_drops(*args):
-            dropped_now = drops(*args)
-            if dropped_now:
+        def patched_wave_fronts(*args):
+            specs = wave_fronts(*args)
+            if specs is None:  # the family was dropped (a merge refused keeps both)
                 me.decisions.append("drop")
-            return dropped_now
+            return specs
 
         def patched_contact(engine, left, right, material, t, x, group):
             kept = contact(engine, left, right, material, t, x, group)
@@ -114,10 +154,21 @@ class Attribution:
             me.decisions.append("coalesce")
             return merge(*args)
 
+        def tagging(function, tag):
+            def patched(*args):
+                done = function(*args)
+                if done:
+                    me.decisions.append(tag)
+                return done
+            return patched
+
         engine_module.Engine._process = patched_process
-        engine_module.dropped.drops = patched_drops
+        engine_module.outgoing.wave_fronts = patched_wave_fronts
         engine_module.Engine._entropy_contact = patched_contact
         coalesce._replace = patched_merge
+        zones.try_zone = tagging(zones.try_zone, "lattice")
+        fragment.try_replace = tagging(fragment.try_replace, "fragment")
+        ringing.try_end = tagging(ringing.try_end, "ring-down")
 
 
 def main() -> None:
@@ -130,11 +181,15 @@ def main() -> None:
     start = time.process_time()
     solution = run(campaign_scene(args.seed, max_events=200_000))
     cpu = time.process_time() - start
-    balance, scale = (solution.accuracy_report["balance"],
-                      solution.conservation()["energy_scale"])
+    attribution.advance(solution.scene.t_end)  # the fronts alive at the end
+    balance, conservation = solution.accuracy_report["balance"], solution.conservation()
+    scale = conservation["energy_scale"]
+    # fronts a lattice spliced count from the event, at their cells' states: the work the
+    # boundaries did on the lattice's own cells differs, and belongs to the lattice
+    attribution.jumps["lattice"] += attribution.work - conservation["work"]
 
     def percent(counter):
-        return {k: round(100.0 * v / scale, 3) for k, v in counter.most_common()
+        return {k: round(float(100.0 * v / scale), 3) for k, v in counter.most_common()
                 if abs(v) > 1e-6 * scale}
 
     print(f"seed {args.seed}: {solution.stats['events']} events, {cpu:.1f} s CPU; momentum "
@@ -146,7 +201,7 @@ def main() -> None:
     total = sum(attribution.by_tag.values()) + sum(attribution.jumps.values())
     print(f"  attributed in all: {100.0 * total / scale:.4f} %")
     for front_id, energy in sorted(attribution.by_front.items(),
-                                   key=lambda item: item[1])[:args.fronts]:
+                                   key=lambda item: -abs(item[1]))[:args.fronts]:
         kind, tag, t0, x0 = attribution.info[front_id]
         print(f"    {kind} {front_id} ({tag}) from {t0 * 1e6:.4f} us, {x0 * 1e3:.4f} mm: "
               f"{100.0 * energy / scale:.4f} %")

@@ -316,7 +316,7 @@ class Engine:
                 interactions.fracture(self, entry[4])
                 continue
             if kind == "mismatch":
-                if not mismatch.is_due(self, entry[4]):
+                if not mismatch.is_due(self, entry[4]) or mismatch.deferred(self, entry[4]):
                     continue
                 front = entry[4].site
                 x, seed = front.position(t), [front]
@@ -425,13 +425,21 @@ class Engine:
         material_right = region_right.material if region_right is not None else None
         drop = [dropped.drops(self, sol, d, region_left, region_right, site or new_site, t)
                 for d in (-1, 1)]
+        merged = None
+        if (site or new_site) is None and any(drop) and all(
+                d or not waves for d, waves in zip(drop, (sol.left_waves, sol.right_waves),
+                                                   strict=True)):
+            merged = self._merged_state(group, region_left, region_right, t, x)
+            if not dropped.merge_allowed(self, group[0].prev, group[-1].next, region_left,
+                                         region_right, merged, t):
+                drop, merged = [False, False], None
         left_specs = outgoing.wave_fronts(self, sol.left_waves, material_left, t, x, incoming,
                                           -1, site or new_site, drop[0])
         right_specs = outgoing.wave_fronts(self, sol.right_waves, material_right, t, x,
                                            incoming, +1, site or new_site, drop[1])
         mismatch.note_event(self, site or new_site, group, t,
                             sol.left_waves if left_specs is None else (),
-                            sol.right_waves if right_specs is None else ())
+                            sol.right_waves if right_specs is None else (), merged)
         left_star = sol.left_star if left_specs is not None else (
             region_left.state if region_left is not None else None)
         right_star = sol.right_star if right_specs is not None else (
@@ -551,7 +559,7 @@ class Engine:
                 region.right_points.append(point)
                 region.t_end = t
         if not items:
-            self._merge(before, after, region_left, region_right, t, x)
+            self._merge(group, region_left, region_right, t, x)
             return
         if region_left is not None:
             region_left.right_points.append(point)
@@ -584,8 +592,17 @@ class Engine:
         for a, b in itertools.pairwise(chain):
             self.push_pair(a, b, t)
 
-    def _merge(self, before, after, region_left, region_right, t, x) -> None:
+    @staticmethod
+    def _merged_state(group, region_left, region_right, t, x) -> State:
+        """The state of the region that ``region_left`` and ``region_right``, beside the
+        event of ``group`` at ``(x, t)`` (m, s) in one material, become when no front
+        leaves it: weighted by the mass each holds now, so that it holds both."""
+        return _merged(region_left.state, region_right.state,
+                       x - group[0].prev.position(t), group[-1].next.position(t) - x)
+
+    def _merge(self, group, region_left, region_right, t, x) -> None:
         """No front leaves the event: the two neighbouring regions become one."""
+        before, after = group[0].prev, group[-1].next
         x_left = before.position(t)
         x_right = after.position(t)
         region_left.right_points.append((x, t))
@@ -593,8 +610,7 @@ class Engine:
         region_right.right_points.append((x_right, t))
         region_right.left_points.append((x, t))
         region_left.t_end = region_right.t_end = t
-        # weighted by the mass each region holds now, so the merged region holds both
-        state = _merged(region_left.state, region_right.state, x - x_left, x_right - x)
+        state = self._merged_state(group, region_left, region_right, t, x)
         merged = self.new_region(state, region_left.material, region_left.layer, t,
                                  (x_left, t), (x_right, t), in_fan=inside_fan(before, after))
         before.next, after.prev = after, before

@@ -85,6 +85,8 @@ class Front:
     ``history`` records ``(t, kind)`` changes of a site's
     kind; ``boundary_steps`` the ``(t, value)`` steps of a prescribed history;
     ``earlier_regions`` records ``(t, region_id)``: the region on the right until ``t``.
+    ``solved_until`` (s): a site that ends or lies inside a lattice, the time up to which
+    that lattice solved the cells beside it, ahead of the queue (``fronttrack.zones``).
     ``lineage`` names the wave a wave descends from (``fronttrack.outgoing.lineage``):
     a wave born at an impact or at an edge of the material (a boundary, a gap's face)
     starts a lineage, the waves an event sends out inherit the lineage of the waves that
@@ -122,6 +124,7 @@ class Front:
     boundary_steps: list = field(default_factory=list)
     earlier_regions: list = field(default_factory=list)
     lineage: int = MIXED
+    solved_until: float = 0.0
 
     @property
     def is_site(self) -> bool:

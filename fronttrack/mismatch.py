@@ -91,17 +91,23 @@ def new_ledger() -> Ledger:
     return Ledger(pending={})
 
 
-def note_event(engine, site, group, t: float, dropped_left, dropped_right) -> None:
+def note_event(engine, site, group, t: float, dropped_left, dropped_right,
+               merged=None) -> None:
     """After an event at time ``t`` (s) among the fronts ``group``, at ``site`` (or
     none), that dropped the waves ``dropped_left`` and ``dropped_right`` (leading first).
 
     At a site, its pending mismatch is settled and the new one (if any) follows it.
     Waves dropped inside a material would have run to the next front on their side;
-    where that front is a site, the mismatch is the site's (added to what it has)."""
+    where that front is a site, the mismatch is the site's (added to what it has).
+    When both families were dropped and the regions beside the event merge into the
+    state ``merged``, a site beside them keeps the change of its side's stress."""
     left, right = _total(dropped_left), _total(dropped_right)
     if site is not None:
         _note(engine, site, left + right, t)
         return
+    if merged is not None:
+        left = abs(merged.sigma - group[0].prev.region_right.state.sigma)
+        right = abs(merged.sigma - group[-1].region_right.state.sigma)
     for dropped, neighbour in ((left, group[0].prev), (right, group[-1].next)):
         if dropped > 0.0 and neighbour is not None:
             pending = engine.mismatches.pending.get(neighbour.id)
@@ -136,6 +142,23 @@ def is_due(engine, entry: Pending) -> bool:
     """Whether a queued deadline is still the site's pending one (the site may have
     been solved again since, or have ended)."""
     return entry.site.alive and engine.mismatches.pending.get(entry.site.id) is entry
+
+
+def deferred(engine, entry: Pending) -> bool:
+    """Whether a due deadline waits for a lattice: the cells beside its site were solved
+    ahead of the queue up to ``site.solved_until`` (``fronttrack.zones``), so solving the
+    site now would read them before they begin and send waves into what the lattice
+    solved (campaign seed 433: a wave dropped 1.5 mm away put its mismatch on a gap face
+    whose far side a lattice had solved 31 ns ahead; the waves sent there ran past the
+    wall).  The deadline moves to the lattice's cut, and the impulse the mismatch may
+    make grows with it."""
+    later = entry.site.solved_until
+    if entry.deadline >= later:
+        return False
+    entry.allowed += entry.stress * (later - entry.deadline)
+    entry.deadline = later
+    engine.push_mismatch(entry)
+    return True
 
 
 def count_resolved(engine) -> None:

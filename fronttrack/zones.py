@@ -412,6 +412,8 @@ def _splice(engine, run: _Run, lat: moc.Lattice, t: float) -> None:
     sites = [f for f in run.slots if f.is_site]
     for index, site in enumerate(sites):
         _record_changes(site, lat.site_changes[index], cell_ids)
+    for site in (run.left_end, *sites, run.right_end):
+        site.solved_until = max(site.solved_until, lat.cut)
     _record_changes(run.left_end, lat.site_changes["left"], cell_ids)
     for position, front in enumerate(chain[:-1]):
         front.region_right = regions[int(live_cell[position])]
