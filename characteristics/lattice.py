@@ -599,6 +599,9 @@ class _March:
         kind = RIGHT_REFLECTION if right_going else LEFT_REFLECTION
         node = self._node(x, t, kind, sigma[p_node][m_node])
         old, other = self.cell[face], self.cell[came_from]
+        if (new_p, new_m) == (self.pi[came_from], self.mi[came_from]):
+            self._absorb(ray, node, old, other, where)
+            return
         self.cell_end[old] = t
         new_cell = self._new_cell(new_p, new_m, t, face)
         self._chain(node, ((old, 0), (old, 1), (other, 1 if right_going else 0),
@@ -613,6 +616,31 @@ class _March:
         self._note_tension(sigma[new_p][new_m], t, x)
         self._face_moved(ray, t, where, new_cell)
         self._schedule_around({ray, face - 1 if not right_going else ray})
+
+    def _absorb(self, ray: int, node: int, old: int, other: int, where: str) -> None:
+        """The ray in ``ray`` ends at the contact node ``node`` of the end ``where``
+        without a reflection: the contact reflects nothing the grid resolves (the new face
+        cell would be the state behind the ray, ``characteristics.grid``), so the cell
+        behind it (``other``) reaches the contact and the face cell ``old`` ends.  A
+        reflected characteristic with the same state on both sides carries no wave; kept,
+        it would ring in the layer for ever, one node or one event at each meeting.  The
+        slot is removed; the queued nodes of the shifted slots are made again."""
+        t = self.node_t[node]
+        self.seg_end[self.seg[ray]] = t
+        self.cell_end[old] = t
+        self._chain(node, ((old, 0), (old, 1), (other, 1 if where == "right" else 0)))
+        for array in (self.fam, self.own, self.tag, self.site, self.seg, self.x0, self.t0,
+                      self.sp, self.version):
+            del array[ray]
+        face = ray + 1 if where == "right" else ray
+        for array in (self.cell, self.pi, self.mi):
+            del array[face]
+        self.k -= 1
+        if where == "left":
+            self.site_changes["left"].append((t, other))
+        self.queue = [entry for entry in self.queue if not isinstance(entry[3], int)]
+        heapq.heapify(self.queue)
+        self._schedule_around(set(range(self.k)))
 
     def _emit(self, end: str, key, t: float, x: float, arriving: int, source: int) -> bool:
         """A ray goes through the contact at ``end``: what it sends into the far side (its
