@@ -36,12 +36,6 @@ REFLECTION_ROUNDS = 4
 """Reflections of reflections tabulated in the grid (a ray ringing between two
 reflecting ends needs more; the lattice stops where the grid runs out)."""
 
-RELEASE_REFLECTION_ROUNDS = 1
-"""The same on a release-only path (``Isentrope.release_only``): a release reflected as
-a release expands the material further at each round, and the first reflection as a
-compression (at a free surface, or a stiffer far side) cuts the zone, so the rounds
-beyond the first mostly tabulate states no node reaches."""
-
 
 MAX_GRID_STATES = 200_000
 """Largest grid a lattice tabulates; a zone that would need more (many rays with many
@@ -80,8 +74,7 @@ class Grid:
         self.snap = _snap_width(zone, self.joins)
         p_values = np.unique(np.concatenate([zone.jp, zone.own[zone.family > 0]]))
         m_values = np.unique(np.concatenate([zone.jm, zone.own[zone.family < 0]]))
-        rounds = RELEASE_REFLECTION_ROUNDS if self.table.release_only else REFLECTION_ROUNDS
-        for _ in range(rounds):
+        for _ in range(REFLECTION_ROUNDS):
             grown = False
             for condition in self.to_minus:
                 new = self._reflect(condition, p_values, -1, m_values)[0]

@@ -45,7 +45,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from materials import FinitePlastic, IdealGas, State, StateOutOfRangeError
+from materials import IdealGas, State, StateOutOfRangeError
 from materials.base import AffineEnergyMaterial
 from materials.wavecurves import SPINODAL_FRACTION
 
@@ -85,9 +85,6 @@ class Isentrope(ABC):
     material: object
     through: State
     _resolution: float | None = None
-    release_only = False
-    """True for a path a material follows only while it expands (a solid's plastic
-    release path): a wave that would compress a state of it leaves the path."""
 
     @abstractmethod
     def phi_at_stress(self, sigma: float) -> float:
@@ -138,22 +135,12 @@ class Isentrope(ABC):
         phi = self.phi_at_stress(state.sigma)
         return state.u + phi, state.u - phi
 
-    def plastic_strain(self, v):
-        """Plastic strain of the states of this isentrope at the volumes ``v`` (floats or
-        arrays): zero, except on a solid's release path (``PlasticPathIsentrope``)."""
-        return 0.0 * v
-
-    def make_state(self, sigma: float, u: float, v: float, e: float) -> State:
-        """The state of this isentrope at ``(sigma, u, v, e)``, with its plastic strain."""
-        return State(sigma=float(sigma), u=float(u), v=float(v), e=float(e),
-                     plastic_strain=float(self.plastic_strain(v)))
-
     def state(self, j_plus: float, j_minus: float) -> State:
         """The state whose invariants are ``j_plus`` and ``j_minus``."""
         phi = 0.5 * (j_plus - j_minus)
         v = self.volume_at_phi(phi)
         sigma, e, _ = self.point_at_volume(v)
-        return self.make_state(sigma, 0.5 * (j_plus + j_minus), v, e)
+        return State(sigma=sigma, u=0.5 * (j_plus + j_minus), v=v, e=e)
 
     def state_at_stress(self, sigma: float, j: float, direction: int) -> State:
         """The state of stress ``sigma`` whose invariant ``J-`` (``direction = +1``: the state
@@ -164,7 +151,7 @@ class Isentrope(ABC):
         v = self.volume_at_phi(phi)
         _, e, _ = self.point_at_volume(v)
         u = j + phi if direction > 0 else j - phi
-        return self.make_state(sigma, u, v, e)
+        return State(sigma=float(sigma), u=u, v=v, e=e)
 
     def speed(self, j_plus: float, j_minus: float) -> float:
         """Lagrangian sound speed (m/s) of the state with these invariants."""
@@ -209,26 +196,13 @@ class TabulatedIsentrope(Isentrope):
         v_min, v_max = material.volume_range()
         self._limits = [v_min * (1.0 + 1e-9), v_max * (1.0 - 1e-9)]
         self._width = PANEL_FRACTION * material.v0
-        self._label = self._label_of(through)
-        c_star = math.sqrt(max(self._speed_squared(through), 0.0))
+        c_star = math.sqrt(max(material.sound_speed_squared(through.v, through.e), 0.0))
         self._c_floor = SPINODAL_FRACTION * c_star
         self._closed = [False, False]  # no panel can be added below / above
         self._panels: list[_Panel] = []  # ascending in v
+        self._label = material._isentrope_label(through)
         self._extend(upward=True)
         self._refresh()
-
-    # --- the path (overridden by ``PlasticPathIsentrope``) ----------------------------
-    def _label_of(self, state: State) -> float:
-        """The label of the isentrope through ``state`` (``K = e E(v) + F(v)``, J/kg)."""
-        return self.material._isentrope_label(state)
-
-    def _speed_squared(self, state: State) -> float:
-        """``C_L^2`` (m^2/s^2) at ``state`` on this isentrope."""
-        return self.material.sound_speed_squared(state.v, state.e)
-
-    def _arrays(self, v: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """``(sigma, e, C_L^2)`` on this isentrope at the volumes ``v`` (arrays)."""
-        return self.material.isentrope_arrays(self.through, v)
 
     # --- construction -------------------------------------------------------------
     def _extend(self, upward: bool) -> None:
@@ -254,13 +228,13 @@ class TabulatedIsentrope(Isentrope):
 
     def _spinodal_cut(self, start: float, end: float) -> float:
         """``end``, or the volume before it where ``C_L`` falls to the floor (closing the table)."""
-        _, _, c2 = self._arrays(np.array([end]))
+        _, _, c2 = self.material.isentrope_arrays(self.through, np.array([end]))
         if c2[0] > self._c_floor**2:
             return end
         lo, hi = start, end
         for _ in range(60):
             mid = 0.5 * (lo + hi)
-            c2 = self._arrays(np.array([mid]))[2][0]
+            c2 = self.material.isentrope_arrays(self.through, np.array([mid]))[2][0]
             lo, hi = (mid, hi) if c2 > self._c_floor**2 else (lo, mid)
         self._closed[1] = True
         return lo
@@ -270,7 +244,7 @@ class TabulatedIsentrope(Isentrope):
         """Panels covering ``[lo, hi]``; ``phi_known`` is ``phi`` at ``lo`` if ``from_low``
         else at ``hi``."""
         v = chebyshev.points(lo, hi)
-        sigma, _, c2 = self._arrays(v)
+        sigma, _, c2 = self.material.isentrope_arrays(self.through, v)
         c = np.sqrt(np.maximum(c2, 0.0))
         c_coefs = chebyshev.coefficients(c)
         sigma_coefs = chebyshev.coefficients(sigma)
@@ -378,7 +352,7 @@ class TabulatedIsentrope(Isentrope):
         keys, coefs, lo, hi = self._stack
         index = np.clip(np.searchsorted(keys, -phi, side="right") - 1, 0, len(lo) - 1)
         v = chebyshev.evaluate_many(coefs[index], lo[index], hi[index], phi)
-        sigma, e, c2 = self._arrays(v)
+        sigma, e, c2 = self.material.isentrope_arrays(self.through, v)
         return sigma, v, e, np.sqrt(np.maximum(c2, 0.0))
 
     def arrays_at_stress(self, sigma: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -431,68 +405,6 @@ class TabulatedIsentrope(Isentrope):
 
     def rounding(self, state: State) -> float:
         return _mg_rounding(self.material, state)
-
-
-class PlasticPathIsentrope(TabulatedIsentrope):
-    """The reverse-yield (plastic release) path of a perfectly plastic ``FinitePlastic``
-    solid through ``through``, tabulated as an isentrope.
-
-    On the branch ``S = -2Y/3`` the deviator is constant and the hydrostatic energy obeys
-    ``de_h/dv = -(A + B e_h) - S`` (``FinitePlastic.release_label``), so the stress is a
-    function of the volume alone along the path, ``C^2 = -v0^2 d sigma/dv`` is the plastic
-    speed, and the Riemann invariants ``u +- phi`` exist along it as on an isentrope.  The
-    path holds only while the material expands: a state of it that is compressed reloads
-    elastically, off the path (``release_only``; the lattice cuts a zone there).  Its
-    states carry their plastic strain, ``eps_p = 2 eps/3 + Y/(3G)``.
-    """
-
-    release_only = True
-
-    def _label_of(self, state: State) -> float:
-        return self.material.release_label(state)
-
-    def _speed_squared(self, state: State) -> float:
-        return float(self.material.release_arrays(self._label, float(state.v))[2])
-
-    def _arrays(self, v: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        return self.material.release_arrays(self._label, v)
-
-    def point_at_volume(self, v: float) -> tuple[float, float, float]:
-        sigma, e, c2 = self.material.release_arrays(self._label, float(v))
-        return float(sigma), float(e), math.sqrt(c2) if c2 > 0.0 else 0.0
-
-    def plastic_strain(self, v):
-        return self.material.release_plastic_strain(v)
-
-    @staticmethod
-    def labels(material, state: State, tolerance: float = 0.0) -> tuple[float, float] | None:
-        """The path label of ``state`` and the width in label within which a path passes
-        within ``tolerance`` (Pa, at least the rounding) of it; ``None`` off the
-        reverse-yield branch (an elastic state: its waves follow other paths)."""
-        if not material.on_reverse_yield(state):
-            return None
-        label = material.release_label(state)
-        if material._b == 0.0:
-            return label, 0.0
-        stress = max(_path_rounding(material, state), tolerance)
-        return label, stress * material.eos._energy_factor(float(state.v)) / material._b
-
-    def stress_gap(self, state: State) -> float:
-        mat = self.material
-        if not mat.on_reverse_yield(state):
-            return math.inf
-        factor = mat.eos._energy_factor(float(state.v))
-        return abs(mat.release_label(state) - self._label) * mat._b / factor
-
-    def rounding(self, state: State) -> float:
-        return _path_rounding(self.material, state)
-
-
-def _path_rounding(material, state: State) -> float:
-    """``LABEL_TOLERANCE`` of the stress, or of a millionth of the plastic modulus near
-    zero, on the reverse-yield path of ``state``."""
-    c2 = material.release_arrays(material.release_label(state), float(state.v))[2]
-    return LABEL_TOLERANCE * max(abs(state.sigma), 1e-6 * material.rho0 * abs(c2))
 
 
 def _mg_rounding(material, state: State) -> float:
@@ -593,13 +505,9 @@ def _inverse(coefs: np.ndarray, slope: np.ndarray, v: np.ndarray, samples: np.nd
 def _kind(material):
     """The table class for a material, or ``None`` if its simple waves have no isentrope
     table (linear elastic and elastic–plastic solids, whose waves are discontinuities
-    or follow branches the state does not tell).  A perfectly plastic ``FinitePlastic``
-    solid has tables of its reverse-yield paths (``PlasticPathIsentrope``; states off
-    that branch have none)."""
+    or follow branches the state does not tell)."""
     if not getattr(material, "makes_fans", False):
         return None
-    if isinstance(material, FinitePlastic):
-        return PlasticPathIsentrope if material.has_release_paths else None
     if isinstance(material, IdealGas):
         return IdealGasIsentrope
     if isinstance(material, AffineEnergyMaterial) and not getattr(material, "is_linear", False):

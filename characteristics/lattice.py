@@ -236,8 +236,6 @@ def solve(zone: Zone) -> Lattice:
         return _March(zone, None).unchanged("state outside the table")
     except GridTooLarge:
         return _March(zone, None).unchanged("grid too large")
-    if _compresses(zone, grid):
-        return _March(zone, None).unchanged("compression on a release path")
     first = _March(zone, grid).run(zone.horizon)
     if first.tension_at < first.cut:
         found = _fracture_zone(zone, first)
@@ -249,33 +247,6 @@ def solve(zone: Zone) -> Lattice:
     return first
 
 
-RELOAD_ROUNDING = 1e-12
-"""A stress rise below this fraction of the grid's stress scale is rounding, not a
-reloading (``_March._reloads``)."""
-
-
-def _reload_slack(grid: Grid) -> float:
-    """Stress (Pa) a cell may rise by rounding alone: ``RELOAD_ROUNDING`` of the largest
-    stress of the grid, or of a millionth of its largest modulus ``rho0 C_L^2``."""
-    scale = max(float(np.max(np.abs(grid.sigma))),
-                1e-6 * grid.table.material.rho0 * float(np.max(grid.c)) ** 2)
-    return RELOAD_ROUNDING * scale
-
-
-def _compresses(zone: Zone, grid: Grid) -> bool:
-    """Whether an input ray of a zone on a release-only path (``Isentrope.release_only``)
-    raises the stress behind it: that material reloads, off the path."""
-    if not zone.table.release_only:
-        return False
-    slack = _reload_slack(grid)
-    p, m = grid.p_index(zone.jp), grid.m_index(zone.jm)
-    sigma = grid.sigma[p, m]
-    rays = np.nonzero(zone.family != 0)[0]
-    behind = np.where(zone.family[rays] > 0, rays, rays + 1)
-    ahead = np.where(zone.family[rays] > 0, rays + 1, rays)
-    return bool(np.any(sigma[behind] > sigma[ahead] + slack))
-
-
 def _fracture_zone(zone: Zone, lattice: Lattice):
     """The first fracture and its zone on the first pass's field, outside earlier zones."""
     strength = zone.strength
@@ -284,34 +255,6 @@ def _fracture_zone(zone: Zone, lattice: Lattice):
     except StateOutOfRangeError:
         speed = float(np.max(np.abs(zone.speed))) if zone.speed.size else 1.0
     return fracture_zone(lattice, strength, speed, zone.carried)
-
-
-def expected_nodes(zone: Zone) -> int:
-    """Crossings of the zone's rays, on their lines as they run now, before the first ray
-    reaches a bounding front (``Bound``) or the horizon: an estimate of the nodes a
-    lattice of the zone would solve before its cut, without the reflections at its ends
-    and the crossings those make.  Vectorised over the pairs of rays (no grid)."""
-    fam, x0, t0, speed = zone.family, zone.x0, zone.t0, zone.speed
-    rays = np.nonzero(fam != 0)[0]
-    cut = zone.horizon
-    for end, left in ((zone.left, True), (zone.right, False)):
-        if isinstance(end, Bound) and rays.size:
-            a = (end.x0, end.t0, end.speed) if left else (x0[rays], t0[rays], speed[rays])
-            b = (x0[rays], t0[rays], speed[rays]) if left else (end.x0, end.t0, end.speed)
-            cut = min(cut, float(np.min(_meet_lines(*a, *b))))
-    plus, minus = np.nonzero(fam > 0)[0], np.nonzero(fam < 0)[0]
-    i, j = plus[:, None], minus[None, :]
-    meet = _meet_lines(x0[i], t0[i], speed[i], x0[j], t0[j], speed[j])
-    return int(np.count_nonzero((i < j) & (meet < cut)))
-
-
-def _meet_lines(x0a, t0a, sa, x0b, t0b, sb) -> np.ndarray:
-    """``_meet`` for arrays (broadcast): when line ``a`` (left) reaches line ``b``."""
-    closing = np.asarray(sa - sb, dtype=float)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        t = (x0b - x0a + sa * t0a - sb * t0b) / closing
-    t = np.maximum(np.maximum(t, t0a), t0b)
-    return np.where(closing > 0.0, t, np.inf)
 
 
 def _meet(x0a: float, t0a: float, sa: float, x0b: float, t0b: float, sb: float) -> float:
@@ -381,7 +324,6 @@ class _March:
             self.pi = grid.p_index(zone.jp).tolist()
             self.mi = grid.m_index(zone.jm).tolist()
             self.cell_p, self.cell_m = list(self.pi), list(self.mi)
-            self.slack = _reload_slack(grid)
 
     # --- the queue --------------------------------------------------------------------
     def _push(self, t: float, kind: str, slot, other=None, single: bool = False) -> None:
@@ -548,25 +490,12 @@ class _March:
         self.tension = [t, (x, t, sigma)]
 
     # --- nodes ----------------------------------------------------------------------------
-    def _reloads(self, t: float, behind: tuple[int, int], *ahead: int) -> bool:
-        """Whether the cell of invariant indices ``behind`` would raise the stress of any of
-        the cells at positions ``ahead`` (the cells a new ray runs into): on a release-only
-        path that material reloads elastically, off the path, so the zone stops there."""
-        sigma = self.grid.rows["sigma"]
-        new = sigma[behind[0]][behind[1]] - self.slack
-        if all(new <= sigma[self.pi[q]][self.mi[q]] for q in ahead):
-            return False
-        self.stop = (t, "reloads")
-        return True
-
     def _cross(self, j: int, t: float) -> None:
         """The ``C+`` ray in ``j`` meets the ``C-`` ray in ``j + 1``."""
         a, b = j, j + 1
         grid = self.grid
         x = self.x0[a] + self.sp[a] * (t - self.t0[a])
         new_p, new_m = self.pi[a], self.mi[b + 1]  # the left cell's J+, the right cell's J-
-        if self.zone.table.release_only and self._reloads(t, (new_p, new_m), a, b + 1):
-            return
         oa, ob = self.own[a], self.own[b]
         c = grid.rows["c"]
         speed_a, speed_b = c[oa][new_m], -c[new_p][ob]  # each ray's own new state
@@ -612,9 +541,6 @@ class _March:
         sigma = self.grid.rows["sigma"][new_p][new_m]
         if sigma <= -site.strength:
             self.stop = (t, "contact opens")
-            return
-        if self.zone.table.release_only and self._reloads(
-                t, (new_p, new_m), lo + 2 if right_going else lo):
             return
         node = self._node(site.x, t, PASSAGE, sigma)
         middle = self.cell[lo + 1]
@@ -664,13 +590,6 @@ class _March:
             p_node, m_node = refl, self.own[ray]
         if min(new_p, new_m, refl) < 0:
             self.stop = (t, "reflections beyond the tabulated grid")
-            return
-        # the reflected ray runs into the cell the arriving one left; a transmitted one
-        # (a join) into the far cell, whose stress moves as the face cell's does
-        ahead = [came_from] if zone.table.release_only else []
-        if condition[0] == "join" and end.join.table.release_only:
-            ahead.append(face)
-        if ahead and self._reloads(t, (new_p, new_m), *ahead):
             return
         if condition[0] == "join" and not self._emit(where, (to, condition), t, x,
                                                      self.own[ray],

@@ -125,7 +125,8 @@ def _run_on_table(coords, crossings, cells, first, last, lo, hi, table):
     phi = np.clip(0.5 * (jp - jm), min(own), max(own))
     sigma, v, e, _ = table.arrays_at_phi(phi)
     u = 0.5 * (jp + jm)
-    states = [table.make_state(a, b, c, d) for a, b, c, d in zip(sigma, u, v, e, strict=True)]
+    states = [State(sigma=float(a), u=float(b), v=float(c), e=float(d))
+              for a, b, c, d in zip(sigma, u, v, e, strict=True)]
     # the run's ends are its cells' own states (exact), not re-evaluated ones
     if lo is not None:
         states[0] = cells[first].state

@@ -246,13 +246,12 @@ def _stress(table, w: float, z: float) -> tuple[float, float, float]:
 
 def _tables(engine, bounds, regions):
     """The isentrope table of each stretch between the fragment's sites (every cell of a
-    stretch on it), or ``None`` (also for a release-only path: a ringing fragment
-    compresses its cells, which then leave such a path)."""
+    stretch on it), or ``None``."""
     stretches, current = [], None
     for front, region in zip(bounds[:-1], regions, strict=True):
         table = (region.table if region.table is not UNKNOWN  # looked up, never built
                  else engine.tables.table(region.material, region.state, build=False))
-        if table is None or table.release_only:
+        if table is None:
             return None
         if front.is_site and front is not bounds[0]:
             stretches.append(current)

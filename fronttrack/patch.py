@@ -64,10 +64,9 @@ class LatticePatch:
     lineage: int = MIXED
 
     def state(self, index: int) -> State:
-        """The state of cell ``index`` (position in the arrays, not its id), with the
-        plastic strain of the lattice's path (``Isentrope.make_state``)."""
-        return self.table.make_state(self.cell_sigma[index], self.cell_u[index],
-                                     self.cell_v[index], self.cell_e[index])
+        """The state of cell ``index`` (position in the arrays, not its id)."""
+        return State(sigma=float(self.cell_sigma[index]), u=float(self.cell_u[index]),
+                     v=float(self.cell_v[index]), e=float(self.cell_e[index]))
 
     def polygon(self, index: int) -> list[tuple[float, float]]:
         """Boundary of cell ``index`` as ``(X, t)`` vertices (m, s)."""

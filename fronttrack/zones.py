@@ -30,7 +30,6 @@ from dataclasses import dataclass
 import numpy as np
 
 from characteristics import lattice as moc
-from characteristics.grid import MAX_GRID_STATES
 from materials import State
 
 from . import fragment, interactions, spall
@@ -76,8 +75,6 @@ def try_zone(engine, group: list[Front], t: float) -> bool:
     zone = _zone(engine, run, t)
     if not table.resolves(max(np.ptp(zone.jp), np.ptp(zone.jm))):
         return False  # waves too weak for the table's rounding: the Riemann solver's
-    if table.release_only and not _worth_a_grid(zone):
-        return False  # a lattice cut after a few nodes: its grid costs more than they save
     lattice = moc.solve(zone)
     if lattice.nodes == 0:
         if lattice.fracture is None:
@@ -89,40 +86,6 @@ def try_zone(engine, group: list[Front], t: float) -> bool:
     if lattice.fracture is not None:
         spall.schedule(engine, lattice, _layer_at(run, lattice.fracture.x), t)
     return True
-
-
-GRID_STATES_PER_NODE = 400
-"""States of a lattice's grid that cost as much as the Riemann solve a node replaces: a
-grid state of a release path costs about 1.1 us (its volume from the table and the
-closed form of the path), a Riemann solve of the finite-plastic solid about 0.5 ms
-(the class-B reproducer of ``benchmarks/RUN_LENGTH.md``, 2026-11-25)."""
-
-
-def _worth_a_grid(zone: moc.Zone) -> bool:
-    """Whether the nodes a zone's lattice is expected to solve before its cut
-    (``characteristics.lattice.expected_nodes``) pay for its grid of states, and the grid
-    is likely to fit (``_grid_estimate`` within ``MAX_GRID_STATES``).
-
-    Used for release paths (``Isentrope.release_only``), whose zones are often cut by a
-    shock a few nodes in (a plastic release fan overtaking the shock it follows), or span
-    hundreds of rays between two contacts whose reflections outgrow any grid."""
-    states = _grid_estimate(zone)
-    return (states <= MAX_GRID_STATES
-            and moc.expected_nodes(zone) * GRID_STATES_PER_NODE >= states)
-
-
-def _grid_estimate(zone: moc.Zone) -> int:
-    """States of a zone's grid after one round of reflections (``characteristics.grid``):
-    the distinct invariants of its cells and rays of each family, each reflecting end
-    adding (at most) one new value per value of the other family."""
-    p = np.unique(np.concatenate([zone.jp, zone.own[zone.family > 0]])).size
-    m = np.unique(np.concatenate([zone.jm, zone.own[zone.family < 0]])).size
-    gaps = any(site.kind == moc.GAP for site in zone.sites)
-    if isinstance(zone.right, moc.Reflector) or gaps:
-        m += p
-    if isinstance(zone.left, moc.Reflector) or gaps:
-        p += m
-    return p * m
 
 
 def _eligible(engine, group: list[Front]):
@@ -413,7 +376,7 @@ def _splice(engine, run: _Run, lat: moc.Lattice, t: float) -> None:
             run.cells[j].t_end = float(lat.cell_t1[j])
     for j in np.nonzero(is_live_cell[k + 1:])[0] + k + 1:
         j = int(j)
-        region = Region(id=int(cell_ids[j]), state=_state(run.table, lat, j), material=material,
+        region = Region(id=int(cell_ids[j]), state=_state(lat, j), material=material,
                         layer=int(layer_of[j]), t_start=float(lat.cell_t0[j]),
                         left_points=[], right_points=[], in_fan=True, table=run.table,
                         invariants=(float(lat.cell_jp[j]), float(lat.cell_jm[j])))
@@ -504,8 +467,8 @@ def _send_through(engine, join: Front, end: str, emitted: dict, cut: float,
     rays, cells = [], []
     for k in range(n):
         t_k = float(times[k])
-        state = far_cell.table.make_state(emitted["sigma"][k], emitted["u"][k],
-                                          emitted["v"][k], emitted["e"][k])
+        state = State(sigma=float(emitted["sigma"][k]), u=float(emitted["u"][k]),
+                      v=float(emitted["v"][k]), e=float(emitted["e"][k]))
         later = (x, float(times[k + 1])) if k + 1 < n else None
         region = Region(id=engine.next_region_id(), state=state, material=far_cell.material,
                         layer=far_cell.layer, t_start=t_k, left_points=[(x, t_k)],
@@ -561,9 +524,9 @@ def _update_gaps(engine, run: _Run, lat: moc.Lattice, sites: list[Front]) -> Non
         engine.push_gap_closure(gap)
 
 
-def _state(table, lat, j: int) -> State:
-    """The state of the lattice's cell ``j`` on ``table`` (with the path's plastic strain)."""
-    return table.make_state(lat.cell_sigma[j], lat.cell_u[j], lat.cell_v[j], lat.cell_e[j])
+def _state(lat, j: int) -> State:
+    return State(sigma=float(lat.cell_sigma[j]), u=float(lat.cell_u[j]),
+                 v=float(lat.cell_v[j]), e=float(lat.cell_e[j]))
 
 
 def _jump(lat, left: int, right: int, family: int) -> float:

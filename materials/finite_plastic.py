@@ -418,68 +418,6 @@ class FinitePlastic(Material):
     def wave_curve(self, ahead: State, direction: int, release: str = "isentrope"):
         return FinitePlasticWaveCurve(self, ahead, direction, release)
 
-    # --- the reverse-yield (plastic release) paths ---------------------------------------
-    @property
-    def has_release_paths(self) -> bool:
-        """Whether the reverse-yield branch is one path per state (perfect plasticity,
-        ``H = 0``, finite ``Y``): there ``S = -2Y/3`` is constant, so the stress is a
-        function of the volume alone along the path through a state."""
-        return self.hardening == 0.0 and math.isfinite(self.yield_strength)
-
-    def on_reverse_yield(self, state: State, tolerance: float = 0.0) -> bool:
-        """Whether ``state`` lies on the reverse-yield branch ``S = -2Y/3`` (to ``_SNAP`` of
-        ``Y``, or within ``tolerance`` Pa of deviator): it releases plastically."""
-        if not self.has_release_paths:
-            return False
-        radius = 2.0 * self.yield_strength / 3.0
-        gap = abs(self.deviator(state) + radius)
-        return gap <= max(_SNAP * radius + 1e-15 * self.shear_modulus, tolerance)
-
-    def _release_volume_terms(self, v):
-        """``(E, F + S_y Q)`` at ``v`` (floats or arrays): the Mie–Grüneisen factor
-        ``E = exp(B (v - v0))`` and ``F(v) + S_y int_{v0}^{v} E dw``, ``S_y = -2Y/3``."""
-        eos, b = self.eos, self._b
-        factor = eos._energy_factor(v)
-        s_y = -2.0 * self.yield_strength / 3.0
-        if b == 0.0:
-            integral = v - self.v0
-        elif isinstance(v, float):
-            integral = math.expm1(b * (v - self.v0)) / b
-        else:
-            integral = np.expm1(b * (np.asarray(v, dtype=float) - self.v0)) / b
-        return factor, eos._f(v) + s_y * integral
-
-    def release_label(self, state: State) -> float:
-        """The label of the reverse-yield path through ``state`` (J/kg):
-        ``L = e_h E(v) + F(v) + S_y Q(v)``, constant along the path.
-
-        On the branch ``de_h/dv = -(A + B e_h) - S_y`` (the plastic work heats the solid,
-        ``materials.finite_plastic`` module notes, ``kappa = 1``), so ``d(e_h E)/dv =
-        -(A + S_y) E`` integrates with ``F = int_{v0} A E`` and ``Q = int_{v0} E``.
-        """
-        v = float(state.v)
-        factor, terms = self._release_volume_terms(v)
-        return float(self.hydrostatic_energy(state) * factor + terms)
-
-    def release_arrays(self, label: float, v):
-        """``(sigma, e, C^2)`` on the reverse-yield path of label ``label`` at the volumes
-        ``v`` (a float or an array; Pa, J/kg, m^2/s^2): ``e_h = (L - F - S_y Q)/E``,
-        ``sigma = A + B e_h + S_y``, ``C^2 = C_MG^2(v, e_h) + v0^2 B S_y``
-        (``plastic_speed`` with ``H = 0``)."""
-        if not isinstance(v, float):
-            v = np.asarray(v, dtype=float)
-        factor, terms = self._release_volume_terms(v)
-        e_h = (label - terms) / factor
-        s_y = -2.0 * self.yield_strength / 3.0
-        sigma = self.eos._a(v) + self._b * e_h + s_y
-        c2 = self.eos.sound_speed_squared(v, e_h) + self.v0**2 * self._b * s_y
-        return sigma, e_h + self.shear_energy(s_y), c2
-
-    def release_plastic_strain(self, v):
-        """Plastic strain (floats or arrays) on the reverse-yield branch at ``v``:
-        ``S = (4/3) G eps - 2 G eps_p = -2Y/3`` gives ``eps_p = 2 eps/3 + Y/(3G)``."""
-        return (2.0 / 3.0) * self.strain(v) + self.yield_strength / (3.0 * self.shear_modulus)
-
     def contact_reflection(self, left: State, right: State, amplitude: float) -> float:
         """Bound (Pa) on the stress a wave of ``amplitude`` reflects from an entropy /
         plastic-strain jump between ``left`` and ``right`` (equal stress and velocity).
