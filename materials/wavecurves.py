@@ -280,7 +280,13 @@ class HydrodynamicWaveCurve(StressRange):
             return bracketed_newton(residual, lo, hi, guess, rel_tol=2e-16, f_tol=noise)
         except (NoSolutionError, StateOutOfRangeError):
             self.check_stress(sigma)  # names the range the stress is outside
-            raise
+            if sigma > a.sigma or not math.isfinite(hi):
+                raise
+        # a release path that passes its spinodal inside the volume range (an expanded
+        # matrix's isentrope: C_L = 0 at its most tension, ``sigma_min``) turns back to
+        # lower tension beyond it: the root lies before the spinodal
+        return bracketed_newton(residual, lo, self._last_valid_volume(hi), guess,
+                                rel_tol=2e-16, f_tol=noise)
 
     def _snowplow(self, sigma: float) -> bool:
         """Whether a shock to ``sigma`` compresses a gas to its limiting volume.
