@@ -116,6 +116,11 @@ class Material(ABC):
     def stress(self, v: float, e: float) -> float:
         """Longitudinal stress (Pa, compression positive) at volume ``v`` and energy ``e``."""
 
+    def stress_with_history(self, history: State, v: float, e: float) -> float:
+        """Stress (Pa) at ``(v, e)`` of a point with the history variables of ``history``
+        (a porous body's distension); ``stress(v, e)`` for a material without any."""
+        return self.stress(v, e)
+
     @abstractmethod
     def sound_speed(self, v: float, e: float) -> float:
         """Lagrangian isentropic sound speed ``C_L = v0 sqrt(-(d sigma/dv)_s)`` (m/s)."""

@@ -206,6 +206,12 @@ class PorousSolid(Material):
         variable ``alpha`` is not a function of ``(v, e)``; the wave curves carry it."""
         return self.solid.stress(v / self.alpha0, e) / self.alpha0
 
+    def stress_with_history(self, history: State, v: float, e: float) -> float:
+        """Stress (Pa) at ``(v, e)`` at the distension of ``history``: ``p_s(v/alpha, e) /
+        alpha``."""
+        alpha = self.distension(history)
+        return self.solid.stress(v / alpha, e) / alpha
+
     def sound_speed(self, v: float, e: float) -> float:
         """A speed scale (m/s): the larger of the virgin body's and the fully dense
         matrix's Lagrangian speeds at ``(v, e)`` where each is defined, ``C_L =

@@ -217,3 +217,26 @@ def test_an_expanded_matrix_released_into_tension_stops_at_its_spinodal():
     with pytest.raises(StateOutOfRangeError, match="-2.06"):
         curve.state_at(1.01 * floor)
 
+def test_a_compacted_powder_layer_ended_as_ringing_keeps_its_distension():
+    # campaign seed 933: a 50 um layer of silica powder, compacted (alpha = 1) at 9.95 GPa
+    # between Zn-like and Al2024 anvils, is ended as a ringing layer at 0.342 us; its
+    # limit state's volume was sought with the virgin body's stress (alpha0 = 2.86): a
+    # matrix at 2.28 v_s0 "beyond the spinodal".  The volume now keeps the layer's own
+    # distension: the state is on the compacted matrix's equation of state (the closure
+    # finds it to 1e-12 of the stress scale; 1e-9 leaves room for the run's records).
+    import dataclasses
+
+    from random_scenes import campaign_scene
+
+    from fronttrack.runner import run
+    solution = run(dataclasses.replace(campaign_scene(933), t_end=0.36e-6))
+    report = solution.accuracy_report
+    (ended,) = report["ringing_replaced"]
+    assert ended["layer"] == 4 and 9.9e9 < ended["sigma"] < 10e9
+    powder = get("SiO2_powder")
+    state = solution.state_at(0.5 * (ended["x_lo"] + ended["x_hi"]), 0.36e-6)
+    assert powder.distension(state) == 1.0 and state.v < powder.solid.v0
+    assert state.sigma == pytest.approx(ended["sigma"], rel=1e-12)
+    assert powder.solid.stress(state.v, state.e) == pytest.approx(state.sigma, rel=1e-9)
+    assert abs(report["balance"]["energy_error"]) < report["balance"]["promised"]
+
