@@ -105,6 +105,10 @@ class Material(ABC):
     """Whether every wave of one family on one branch moves at one speed (stress linear
     in strain on each branch): trains of such waves are coalesced
     (``fronttrack.coalesce``)."""
+    gaseous: bool = False
+    """Whether this is a gas (ideal gas, detonation products): its stress vanishes with its
+    energy and it carries no tension, so a release to zero stress must end where its
+    energy does (``HydrodynamicWaveCurve._volume``), not at a rounding offset from it."""
 
     @functools.cached_property
     def v0(self) -> float:

@@ -202,7 +202,19 @@ class HydrodynamicWaveCurve(StressRange):
         # subtracting it makes the residual at v_a exactly sigma_a - sigma.
         # Rounding of the residual: a few ulps of the stresses it subtracts.
         noise_floor = abs(a.sigma)
-        if self._on_hugoniot(sigma):
+        on_path = (mat.hugoniot(a, a.v)[0] if mat.gaseous and sigma < a.sigma
+                    and self._on_hugoniot(sigma) else 0.0)
+        if on_path > 0.0:
+            # A gas released along its Hugoniot reaches zero stress where its energy
+            # does, at v_a + 2 e_a / sigma_a: the rounding is corrected by a factor, so
+            # that zero stress stays that point (a shift as large as a near-vacuum
+            # state's own stress would move it past the path's reach, seed 467).
+            scale = a.sigma / on_path
+
+            def residual(v):
+                s, _, ds = mat.hugoniot(a, v)
+                return s * scale - sigma, ds * scale
+        elif self._on_hugoniot(sigma):
             offset = self._hugoniot_offset
             noise_floor += abs(offset)
 

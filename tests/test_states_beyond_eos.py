@@ -240,3 +240,22 @@ def test_a_compacted_powder_layer_ended_as_ringing_keeps_its_distension():
     assert powder.solid.stress(state.v, state.e) == pytest.approx(state.sigma, rel=1e-9)
     assert abs(report["balance"]["energy_error"]) < report["balance"]["promised"]
 
+def test_a_gas_released_along_its_hugoniot_to_zero_stress_ends_where_its_energy_does():
+    # campaign seed 467 (gas / Ta / Ni / silica powder, Hugoniot release): a contact
+    # opened on a gas state recorded at 309.042209 MPa whose equation of state gives
+    # 87 Pa less (merged regions: the mean of (v, e) of p = (gamma - 1) e / v is not the
+    # mean stress, 3e-7 of it).  Its release to zero stress, shifted by that offset, ended
+    # at e = -8.2 J/kg, off the equation of state; a later release from there stopped
+    # with StateOutOfRangeError (e = -665 J/kg).  Along its Hugoniot the gas reaches zero
+    # stress where its energy does, v = v_a + 2 e_a / sigma_a, with u - u_a =
+    # sqrt(sigma_a (v - v_a)) (left-going): checked to rounding (1e-12 of v, of u, and of
+    # e_a for e, whose jump cancels e_a).
+    gas = IdealGas("M0", 1.2, 43.87269056183604)
+    ahead = State(sigma=309042208.66000044, u=-3480.5916929562854, v=0.0017270305905210115,
+                  e=2668625.990822456)
+    assert gas.stress(ahead.v, ahead.e) == pytest.approx(ahead.sigma - 86.83, abs=0.01)
+    state = gas.wave_curve(ahead, -1, "hugoniot").state_at(0.0)
+    v = ahead.v + 2.0 * ahead.e / ahead.sigma
+    assert state.v == pytest.approx(v, rel=1e-12)
+    assert abs(state.e) <= 1e-12 * ahead.e
+    assert state.u == pytest.approx(ahead.u + (ahead.sigma * (v - ahead.v)) ** 0.5, rel=1e-12)
