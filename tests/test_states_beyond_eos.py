@@ -259,3 +259,53 @@ def test_a_gas_released_along_its_hugoniot_to_zero_stress_ends_where_its_energy_
     assert state.v == pytest.approx(v, rel=1e-12)
     assert abs(state.e) <= 1e-12 * ahead.e
     assert state.u == pytest.approx(ahead.u + (ahead.sigma * (v - ahead.v)) ** 0.5, rel=1e-12)
+
+
+def test_a_state_past_the_end_of_a_nearby_isentrope_gets_its_own_table():
+    # campaign seed 997 (and 152, 335, 485, 657, 692, 756, 978, 761: water, fused silica,
+    # Lexan): hot fused silica released to near the end of its equation of state's
+    # range, v0 (1 + 0.3/s), still at +140 MPa.  Its state lies within 1.4 MPa (below the
+    # run's negligible stress) of the isentrope tabulated through 0.44 GPa, whose table
+    # ends at that volume at 140.56 MPa: the state's 139.6 MPa is past it, and every
+    # lookup of the state on that table (fans, lattice zones, fragments) stopped the
+    # run with "the isentrope ... leaves the range".  A state takes a table that reaches
+    # its stress; its own isentrope is tabulated through it.
+    from characteristics.isentrope import IsentropeTables
+
+    silica = get("fused_silica")
+    through = State(sigma=440220479.15036863, u=-425.35679315587834,
+                    v=0.00039866568984798357, e=195304.6136285126)
+    hot = State(sigma=139625487.41363716, u=-620.9549822664474, v=0.0005321291858666678,
+                e=161047.03196343785)
+    tables = IsentropeTables(2e6)
+    near = tables.table(silica, through)
+    assert near.stress_gap(hot) < 2e6 and hot.v < silica.volume_range()[1]
+    with pytest.raises(StateOutOfRangeError, match="leaves the range"):
+        near.phi_at_stress(hot.sigma)
+    own = tables.table(silica, hot)
+    assert own is not near and own.through == hot
+    assert own.invariants(hot) == (hot.u, hot.u)
+
+
+def test_a_hot_release_to_the_end_of_the_range_runs_on_through_the_lattice():
+    # campaign seed 761: a Lexan flyer at 1.5 km/s on Pt; the hot Lexan released at its
+    # faces stops at its range's end (a release floor of 0.14 GPa), and cells within the
+    # tolerance of an isentrope tabulated from 0.18 GPa lie past that table's end.  A
+    # lattice zone asked their invariants on it and the run stopped at t = 0.879 us
+    # (event 1360, "the isentrope through 0.176068 GPa leaves the range").  Such cells
+    # now keep their own tables and are left out of the zone: the run passes that time
+    # (it is stopped here by an event limit, to stay cheap).
+    import dataclasses
+    import re
+
+    from random_scenes import campaign_scene
+
+    from fronttrack.engine import EventLimitError
+    from fronttrack.runner import run
+    scene = campaign_scene(761)
+    scene = dataclasses.replace(scene, t_end=1.6e-6, accuracy=dataclasses.replace(
+        scene.accuracy, max_events=1500))
+    with pytest.raises(EventLimitError) as stopped:
+        run(scene)
+    reached = float(re.search(r"before t = ([0-9.]+) us", str(stopped.value)).group(1))
+    assert reached > 0.879
