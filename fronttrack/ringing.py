@@ -290,9 +290,11 @@ def _energy_keeping(engine, material, rep, star, regions, widths):
 
 def _volume_at(material, near: State, sigma: float, e: float, tolerance: float):
     """The volume (m^3/kg) near ``near``'s where the stress at energy ``e`` with ``near``'s
-    history (a porous body's distension) is ``sigma`` (secant steps), or ``None``."""
+    history (a porous body's distension) is ``sigma`` (secant steps), or ``None`` (also
+    where that volume lies outside the equation of state's range)."""
     def residual(v):
         try:
+            material.check_volume(v)
             return material.stress_with_history(near, v, e) - sigma
         except (WavediagramError, ValueError):
             return math.nan
