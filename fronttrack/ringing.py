@@ -292,9 +292,12 @@ def _volume_at(material, near: State, sigma: float, e: float, tolerance: float):
     """The volume (m^3/kg) near ``near``'s where the stress at energy ``e`` with ``near``'s
     history (a porous body's distension) is ``sigma`` (secant steps), or ``None`` (also
     where that volume lies outside the equation of state's range)."""
+    v_min, v_max = material.volume_range()
+
     def residual(v):
+        if not v_min < v < v_max:
+            return math.nan
         try:
-            material.check_volume(v)
             return material.stress_with_history(near, v, e) - sigma
         except (WavediagramError, ValueError):
             return math.nan
