@@ -123,6 +123,15 @@ class Isentrope(ABC):
         return self.stress_gap(state) <= max(self.rounding(state), tolerance)
 
     # --- built on the above ---------------------------------------------------------
+    def covers(self, sigma: float) -> bool:
+        """Whether the isentrope reaches stress ``sigma`` (Pa) inside its range (a state
+        within the tolerance of another isentrope may lie past this one's end)."""
+        try:
+            self.phi_at_stress(sigma)
+        except StateOutOfRangeError:
+            return False
+        return True
+
     def resolves(self, spread: float) -> bool:
         """Whether a wave spanning ``spread`` (m/s) in an invariant is read from the table
         to better than 1e-12 of its amplitude (``RESOLVED_FRACTION``)."""
@@ -558,8 +567,10 @@ class IsentropeTables:
         tables = self._tables.setdefault(id(material), [])
         lo = bisect.bisect_left(labels, label - width)
         hi = bisect.bisect_right(labels, label + width)
-        near = [t for t in tables[lo:hi]
-                if t.material is material and t.matches(state, self.tolerance)]
+        # a state near the end of the range may lie within the tolerance of an
+        # isentrope that ends before its stress: that table is not its own
+        near = [t for t in tables[lo:hi] if t.material is material
+                and t.matches(state, self.tolerance) and t.covers(state.sigma)]
         if near:
             return min(near, key=lambda t: t.stress_gap(state))
         if not build:

@@ -186,6 +186,10 @@ def _fan_fronts(engine, fan: Fan, material, t, x, parent, direction,
     if table is not None and math.isfinite(fan.behind.v) \
             and not table.matches(fan.behind, engine.tables.tolerance):
         table = None
+    # a fan near the end of an equation of state's range, on an isentrope within the
+    # tolerance of the table's, may reach stresses past the table's end
+    if table is not None and not table.covers(fan.behind.sigma):
+        table = None
     # detonation products: their own table places the characteristics (equal steps of
     # stress and velocity towards vacuum); the cells keep none (no lattice, no reading)
     own = fan_table(fan) if table is None and res.release == "isentrope" else None

@@ -60,6 +60,7 @@ import math
 
 from materials import WavediagramError, solve_boundary, solve_contact
 from materials.riemann import RiemannSolution
+from materials.state import State
 
 from . import coalesce, fragment
 from .interactions import contact_strength
@@ -281,21 +282,27 @@ def _energy_keeping(engine, material, rep, star, regions, widths):
     scale = max(abs(star.sigma), engine.resolution.stress_scale)
     if hasattr(material, "stress_at"):  # elastic-plastic: stress does not depend on e
         return dataclasses.replace(on_curve, e=e), e - on_curve.e
-    v = _volume_at(material, star.sigma, e, on_curve.v, ENERGY_ROUNDING * scale)
+    v = _volume_at(material, on_curve, star.sigma, e, ENERGY_ROUNDING * scale)
     if v is None:
         return None
     return dataclasses.replace(on_curve, v=v, e=e), e - on_curve.e
 
 
-def _volume_at(material, sigma: float, e: float, guess: float, tolerance: float):
-    """The volume (m^3/kg) near ``guess`` where ``material.stress(v, e) = sigma`` (secant
-    steps), or ``None``."""
+def _volume_at(material, near: State, sigma: float, e: float, tolerance: float):
+    """The volume (m^3/kg) near ``near``'s where the stress at energy ``e`` with ``near``'s
+    history (a porous body's distension) is ``sigma`` (secant steps), or ``None`` (also
+    where that volume lies outside the equation of state's range)."""
+    v_min, v_max = material.volume_range()
+
     def residual(v):
+        if not v_min < v < v_max:
+            return math.nan
         try:
-            return material.stress(v, e) - sigma
+            return material.stress_with_history(near, v, e) - sigma
         except (WavediagramError, ValueError):
             return math.nan
 
+    guess = near.v
     v0, f0 = guess, residual(guess)
     if abs(f0) <= tolerance:
         return guess

@@ -72,6 +72,8 @@ def try_zone(engine, group: list[Front], t: float) -> bool:
     run = _collect(engine, group, table)
     if sum(1 for f in run.slots if f.kind == FrontKind.RAY) < MIN_ZONE_RAYS:
         return False  # a few rays: one Riemann solve each costs less than a lattice
+    if not all(table.covers(c.state.sigma) for c in run.cells):
+        return False  # a cell past the end of the isentrope (the end of the range)
     zone = _zone(engine, run, t)
     if not table.resolves(max(np.ptp(zone.jp), np.ptp(zone.jm))):
         return False  # waves too weak for the table's rounding: the Riemann solver's
@@ -113,7 +115,8 @@ def _on(engine, region: Region | None, table) -> bool:
         return False
     own = engine.table_of(region)
     return own is table or (own is not None
-                            and table.matches(region.state, engine.tables.tolerance))
+                            and table.matches(region.state, engine.tables.tolerance)
+                            and table.covers(region.state.sigma))
 
 
 def _ray_cells(rays: list[Front]) -> list[Region]:

@@ -105,6 +105,10 @@ class Material(ABC):
     """Whether every wave of one family on one branch moves at one speed (stress linear
     in strain on each branch): trains of such waves are coalesced
     (``fronttrack.coalesce``)."""
+    gaseous: bool = False
+    """Whether this is a gas (ideal gas, detonation products): its stress vanishes with its
+    energy and it carries no tension, so a release to zero stress must end where its
+    energy does (``HydrodynamicWaveCurve._volume``), not at a rounding offset from it."""
 
     @functools.cached_property
     def v0(self) -> float:
@@ -115,6 +119,11 @@ class Material(ABC):
     @abstractmethod
     def stress(self, v: float, e: float) -> float:
         """Longitudinal stress (Pa, compression positive) at volume ``v`` and energy ``e``."""
+
+    def stress_with_history(self, history: State, v: float, e: float) -> float:
+        """Stress (Pa) at ``(v, e)`` of a point with the history variables of ``history``
+        (a porous body's distension); ``stress(v, e)`` for a material without any."""
+        return self.stress(v, e)
 
     @abstractmethod
     def sound_speed(self, v: float, e: float) -> float:

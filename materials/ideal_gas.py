@@ -29,6 +29,9 @@ class IdealGas(AffineEnergyMaterial):
     """The isentrope ``p = p_a (v_a / v)^gamma`` is closed-form, good to a few ulps of p
     itself however far it expands (wave curves then resolve near-vacuum releases)."""
 
+    gaseous = True
+    """A gas: its stress vanishes with its energy (``Material.gaseous``)."""
+
     unbounded_hugoniot = True
     """The Hugoniot reaches any pressure at its limiting compression (wave curves then
     shock a cold gas to that compression: the snowplow)."""

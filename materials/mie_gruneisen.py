@@ -26,6 +26,8 @@ from __future__ import annotations
 import math
 from functools import lru_cache
 
+import numpy as np
+
 from .base import ROOM_TEMPERATURE, AffineEnergyMaterial, require_number, require_positive
 from .errors import MaterialError
 from .linear_elastic import _strength
@@ -140,3 +142,82 @@ class MieGruneisen(AffineEnergyMaterial):
         t_s0 = ROOM_TEMPERATURE * math.exp(self.gamma0 * eps)
         temperature = t_s0 + (e - self._reference_isentrope(v)) / self.cv
         return temperature if temperature > 0.0 else None
+
+
+class ExpandedMieGruneisen(MieGruneisen):
+    """A Mie–Grüneisen solid whose states may expand far beyond ``v0``: the matrix of a
+    porous body, compacted hot.
+
+    In compression (``v <= v0``) it is ``MieGruneisen``.  In expansion the linear Us–up
+    fit's extrapolated Hugoniot has a spinodal at ``eps = -1/s``, beyond which it has no
+    meaning; the reference curve there is instead the hydrocodes' linear form
+    (Autodyn's and LS-DYNA's Grüneisen law for ``mu = v0/v - 1 < 0``),
+
+        A(v) = rho0 c0^2 (v0/v - 1),    sigma = A(v) + rho0 Gamma0 e,
+
+    which joins ``MieGruneisen``'s ``A`` with its slope at ``v0``, decreases
+    monotonically to ``-rho0 c0^2`` (the cold matrix's tension never turns back), and
+    gives a real sound speed, ``C_L^2 = v0^2 (rho0 Gamma0 sigma + rho0 c0^2 v0/v^2)``, to
+    every state whose thermal pressure carries its stress (``sigma >= 0``).  Those are
+    the hot compacted states of a highly porous body: its Hugoniot is anomalous, the
+    shock heating holding the matrix at ``v > v0`` (Davison §11.2).  In tension an
+    isentrope ends at its spinodal, ``rho0 Gamma0 sigma = -rho0 c0^2 v0 / v^2``
+    (``C_L = 0``): the most tension the matrix carries on it.
+
+    ``max_expansion``: the largest ``v/v0`` the model is asked for (the end of its volume
+    range, at least ``MieGruneisen``'s; isentrope tables are built up to it).
+    """
+
+    def __init__(self, name: str, rho0: float, c0: float, s: float, gamma0: float,
+                 max_expansion: float, **kwargs):
+        super().__init__(name, rho0, c0, s, gamma0, **kwargs)
+        max_expansion = require_positive("max_expansion", max_expansion, name)
+        if not math.isfinite(max_expansion):
+            raise MaterialError(f"{name}: max_expansion (largest v/v0) must be finite, "
+                                f"got {max_expansion!r}")
+        self.max_expansion = max(max_expansion, 1.0 + self.TENSION_LIMIT / self.s)
+
+    def volume_range(self) -> tuple[float, float]:
+        """``MieGruneisen``'s compressed end; in expansion ``max_expansion`` ``v0``, or
+        ``MieGruneisen``'s own end if that is further."""
+        return (super().volume_range()[0], self.v0 * self.max_expansion)
+
+    def _a(self, v):
+        if isinstance(v, float):
+            return self._expanded_a(v) if v > self.v0 else super()._a(v)
+        v = np.asarray(v, dtype=float)
+        return np.where(v > self.v0, self._expanded_a(v), super()._a(np.minimum(v, self.v0)))
+
+    def _a_prime(self, v):
+        if isinstance(v, float):
+            return self._expanded_a_prime(v) if v > self.v0 else super()._a_prime(v)
+        v = np.asarray(v, dtype=float)
+        return np.where(v > self.v0, self._expanded_a_prime(v),
+                        super()._a_prime(np.minimum(v, self.v0)))
+
+    def _expanded_a(self, v):
+        """The reference curve in expansion, ``rho0 c0^2 (v0/v - 1) = rho0 c0^2 eps /
+        (1 - eps)`` (Pa), written in ``eps`` as ``MieGruneisen``'s is, so that the two
+        round alike at ``v0``."""
+        eps = 1.0 - v / self.v0
+        return self.rho0 * self.c0**2 * eps / (1.0 - eps)
+
+    def _expanded_a_prime(self, v):
+        """Its slope, ``-rho0 c0^2 v0 / v^2`` (Pa kg/m^3)."""
+        return -self.rho0 * self.c0**2 * self.v0 / (v * v)
+
+    def sound_speed_squared(self, v, e):
+        """As ``AffineEnergyMaterial.sound_speed_squared`` (``MieGruneisen``'s inlined form
+        holds in compression only)."""
+        if isinstance(v, float) and v <= self.v0:
+            return super().sound_speed_squared(v, e)
+        return AffineEnergyMaterial.sound_speed_squared(self, v, e)
+
+    def riemann_integral(self, through, v: float, start: float | None = None) -> float:
+        """As ``AffineEnergyMaterial.riemann_integral``, split at ``v0``, where the
+        reference curve's curvature jumps (each piece's quadrature is then exact)."""
+        start = through.v if start is None else start
+        if (start - self.v0) * (v - self.v0) < 0.0:
+            return (super().riemann_integral(through, self.v0, start)
+                    + super().riemann_integral(through, v, self.v0))
+        return super().riemann_integral(through, v, start)

@@ -206,6 +206,12 @@ class PorousSolid(Material):
         variable ``alpha`` is not a function of ``(v, e)``; the wave curves carry it."""
         return self.solid.stress(v / self.alpha0, e) / self.alpha0
 
+    def stress_with_history(self, history: State, v: float, e: float) -> float:
+        """Stress (Pa) at ``(v, e)`` at the distension of ``history``: ``p_s(v/alpha, e) /
+        alpha``."""
+        alpha = self.distension(history)
+        return self.solid.stress(v / alpha, e) / alpha
+
     def sound_speed(self, v: float, e: float) -> float:
         """A speed scale (m/s): the larger of the virgin body's and the fully dense
         matrix's Lagrangian speeds at ``(v, e)`` where each is defined, ``C_L =
@@ -407,7 +413,11 @@ class PorousWaveCurve(StressRange):
         lo, hi = alpha * v_lo, min(alpha * v_hi, start.v)
         noise = 8.0 * _EPS * (abs(sigma) * alpha + abs(start.sigma))
         try:
-            v = bracketed_newton(residual, lo, hi, rel_tol=2e-16, f_tol=noise)
+            f_hi = residual(hi)[0]
+            # an end within the residual's rounding is the root, whichever its sign: a
+            # compaction to the stress it starts from ends where it starts (seed 59)
+            v = hi if abs(f_hi) <= noise else bracketed_newton(
+                residual, lo, hi, rel_tol=2e-16, f_hi=f_hi, f_tol=noise)
         except (NoSolutionError, StateOutOfRangeError):
             self.check_stress(sigma)
             # a highly porous solid is heated so much that its compacted matrix would lie

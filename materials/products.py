@@ -60,6 +60,9 @@ class Products(Material):
     """The isentropes are closed forms good to a few ulps of their own stress down to
     vacuum (the wave curves then resolve releases to near-vacuum)."""
 
+    gaseous = True
+    """A gas: its stress vanishes with its energy (``Material.gaseous``)."""
+
     def __init__(self, name: str, rho0: float, q: float, omega: float, A: float = 0.0,
                  B: float = 0.0, R1: float = 1.0, R2: float = 1.0):
         self.name = name

@@ -202,7 +202,19 @@ class HydrodynamicWaveCurve(StressRange):
         # subtracting it makes the residual at v_a exactly sigma_a - sigma.
         # Rounding of the residual: a few ulps of the stresses it subtracts.
         noise_floor = abs(a.sigma)
-        if self._on_hugoniot(sigma):
+        on_path = (mat.hugoniot(a, a.v)[0] if mat.gaseous and sigma < a.sigma
+                    and self._on_hugoniot(sigma) else 0.0)
+        if on_path > 0.0:
+            # A gas released along its Hugoniot reaches zero stress where its energy
+            # does, at v_a + 2 e_a / sigma_a: the rounding is corrected by a factor, so
+            # that zero stress stays that point (a shift as large as a near-vacuum
+            # state's own stress would move it past the path's reach, seed 467).
+            scale = a.sigma / on_path
+
+            def residual(v):
+                s, _, ds = mat.hugoniot(a, v)
+                return s * scale - sigma, ds * scale
+        elif self._on_hugoniot(sigma):
             offset = self._hugoniot_offset
             noise_floor += abs(offset)
 
@@ -280,7 +292,13 @@ class HydrodynamicWaveCurve(StressRange):
             return bracketed_newton(residual, lo, hi, guess, rel_tol=2e-16, f_tol=noise)
         except (NoSolutionError, StateOutOfRangeError):
             self.check_stress(sigma)  # names the range the stress is outside
-            raise
+            if sigma > a.sigma or not math.isfinite(hi):
+                raise
+        # a release path that passes its spinodal inside the volume range (an expanded
+        # matrix's isentrope: C_L = 0 at its most tension, ``sigma_min``) turns back to
+        # lower tension beyond it: the root lies before the spinodal
+        return bracketed_newton(residual, lo, self._last_valid_volume(hi), guess,
+                                rel_tol=2e-16, f_tol=noise)
 
     def _snowplow(self, sigma: float) -> bool:
         """Whether a shock to ``sigma`` compresses a gas to its limiting volume.
