@@ -226,7 +226,8 @@ def _zone(engine, run: _Run, t: float) -> moc.Zone:
         left=left, right=right, t_now=t, horizon=horizon, strength=strength,
         carried=tuple(carried), sites=tuple(sites),
         max_nodes=NODES_PER_EVENT * max(engine.acc.max_events - engine.counters.events, 1),
-        negligible=engine.resolution.negligible)
+        negligible=engine.resolution.negligible,
+        e=np.array([c.state.e for c in run.cells]))
 
 
 def _own_invariant(engine, run: _Run, i: int, invariants: list) -> float:
