@@ -747,9 +747,10 @@ class _March:
             return v, e
         given = self.zone.e
         for k in np.flatnonzero(given != e[:given.size]):
-            v[k] = volume_at_energy(self.zone.table.material, float(v[k]), float(e[k]),
-                                    float(given[k]))
-            e[k] = given[k]
+            found = volume_at_energy(self.zone.table.material, float(v[k]), float(e[k]),
+                                     float(given[k]))
+            if found is not None:  # else the isentrope's state (as before)
+                v[k], e[k] = found, given[k]
         return v, e
 
     def _emitted(self) -> dict:

@@ -104,6 +104,7 @@ in 10 minutes).  A lattice that carries entropy needs a grid of states that does
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
 from materials import State
 
@@ -127,27 +128,34 @@ def energy_behind(rho0: float, speed: float, ahead: tuple, behind: tuple) -> flo
     return behind[2] - energy_residual(rho0, speed, left, right) / (rho0 * abs(speed))
 
 
-VOLUME_NEWTON_STEPS = 3
-"""Newton steps for the volume of a shifted state: the shift is third order in a ray's
-step, so the first step is already exact to second order in it."""
+VOLUME_NEWTON_STEPS = 30
+"""Most Newton steps for the volume of a shifted state (a shift third order in a ray's
+step takes one or two; a gas near vacuum, whose energy a ray may halve, a few more)."""
+
+VOLUME_ROUNDING = 1e-9
+"""Relative stress mismatch within which the volume of a shifted state is found."""
 
 
-def volume_at_energy(material, v: float, e: float, e_new: float) -> float:
+def volume_at_energy(material, v: float, e: float, e_new: float) -> float | None:
     """Specific volume (m^3/kg) near ``v`` at which ``material`` at energy ``e_new`` (J/kg)
-    has the stress it has at ``(v, e)``.  A material whose stress does not depend on the
-    energy keeps ``v``."""
+    has the stress it has at ``(v, e)``; ``None`` where Newton's method does not find it
+    to ``VOLUME_ROUNDING`` (no such state: a gas whose energy would fall below zero).  A
+    material whose stress does not depend on the energy keeps ``v``."""
     target = material.stress(v, e)
+    allowed = VOLUME_ROUNDING * (abs(target) + material.rho0 * abs(e_new - e))
     w = v
     for _ in range(VOLUME_NEWTON_STEPS):
         gap = material.stress(w, e_new) - target
-        if gap == 0.0:
-            break
+        if abs(gap) <= allowed:
+            return w
         h = 1e-7 * w
         slope = (material.stress(w + h, e_new) - material.stress(w, e_new)) / h
-        if not slope < 0.0:  # not a state of compressive stiffness: leave it
-            return v
+        if not slope < 0.0:  # not a state of compressive stiffness
+            return None
         w -= gap / slope
-    return w
+        if not (math.isfinite(w) and w > 0.0):
+            return None
+    return None
 
 
 def conserving_state(material, speed: float, ahead: State, behind: State) -> State:
@@ -155,11 +163,12 @@ def conserving_state(material, speed: float, ahead: State, behind: State) -> Sta
     Lagrangian ``speed`` (m/s) conserve energy (``energy_behind``), and the volume that
     keeps its stress (``volume_at_energy``), where the jump would create energy; its
     stress and velocity unchanged.  A jump that conserves or loses energy, or a state at
-    vacuum (infinite volume), returns ``behind`` itself: a ray may lose energy (as a
-    dropped wave does), never make it."""
+    vacuum (infinite volume) or with no state of that stress at the lower energy, returns
+    ``behind`` itself: a ray may lose energy (as a dropped wave does), never make it; the
+    rest is energy the ray still creates."""
     e_new = energy_behind(material.rho0, speed, (ahead.sigma, ahead.u, ahead.e),
                           (behind.sigma, behind.u, behind.e))
     if not e_new < behind.e or not (math.isfinite(behind.v) and math.isfinite(e_new)):
         return behind
-    return State(sigma=behind.sigma, u=behind.u,
-                 v=volume_at_energy(material, behind.v, behind.e, e_new), e=e_new)
+    v = volume_at_energy(material, behind.v, behind.e, e_new)
+    return behind if v is None else replace(behind, v=v, e=e_new)
