@@ -107,13 +107,22 @@ def _eligible(engine, group: list[Front]):
 
 
 def _on(engine, region: Region | None, table) -> bool:
-    """Whether ``region`` lies on ``table``'s isentrope: its own table, or one within the
-    tolerance of the run's tables (a nearby isentrope it would share a table with)."""
+    """Whether ``region`` lies on ``table``'s isentrope: its own table, or within the
+    tolerance of the run's tables (Pa, a stress gap at equal volume: a nearby isentrope
+    it would share a table with) plus the gap at which it lies off its own table.  A
+    cell behind expansion rays keeps their table below it by the energy their jumps took
+    (``characteristics.ray_energy``); the lattice reads its invariants from its stress
+    and velocity, which the shift keeps, and keeps its energy (``Zone.e``), so that
+    offset is no reason to leave it out of a zone."""
     if region is None or region.material is not table.material:
         return False
     own = engine.table_of(region)
-    return own is table or (own is not None
-                            and table.matches(region.state, engine.tables.tolerance))
+    if own is table:
+        return True
+    if own is None:
+        return False
+    offset = own.stress_gap(region.state)
+    return table.matches(region.state, engine.tables.tolerance + offset)
 
 
 def _ray_cells(rays: list[Front]) -> list[Region]:

@@ -11,7 +11,7 @@ engine; then the state behind a ray that carries the energy its jump needs
 
 import pytest
 
-from characteristics.ray_energy import conserving_state, energy_residual
+from characteristics.ray_energy import conserving_state, energy_residual, volume_at_energy
 from fronttrack.runner import run
 from fronttrack.scene import Accuracy, Boundary, Layer, Scene
 from materials import LEFT, RIGHT, IdealGas, State
@@ -162,3 +162,37 @@ def test_campaign_327_a_gas_fan_to_vacuum_keeps_its_promise():
     # tables can tell apart conserve energy, the others are neglected with the tables
     balance = run(_campaign_327()).accuracy_report["balance"]
     assert balance["energy_error"] <= balance["promised"]
+
+
+def _off_table(table, state: State, gap: float) -> State:
+    """``state`` at its stress and velocity with the energy (and the volume) that put it
+    ``gap`` (Pa, a stress gap at equal volume) off ``table``, below its isentrope."""
+    m = table.material
+    slope = m.stress(state.v, state.e + 1.0) - m.stress(state.v, state.e)  # Pa per J/kg
+    e = state.e - gap / slope
+    return State(sigma=state.sigma, u=state.u, v=volume_at_energy(m, state.v, state.e, e), e=e)
+
+
+def test_a_cell_shifted_off_its_table_joins_a_zone_within_the_tolerance_of_its_offset():
+    # campaign seed 340 (five metal layers): a cell behind expansion rays lies 2.3 times
+    # the tables' tolerance below its table (the energy the rays' jumps took), and a
+    # zone's table made near it 1.2 tolerances away; judged from its state alone the cell
+    # was off the zone's table, the zone shrank and its lattices fell apart (2 869 events
+    # before the shift, the 10 s time limit with it).  A cell is on a zone's table within
+    # the tolerance plus its own table's offset; a cell on its own table, no wider.
+    from fronttrack.engine import Engine
+    from fronttrack.zones import _on
+    al = get("Al1100")
+    engine = Engine(Scene(layers=(Layer(al, 1e-3, 500.0), Layer(al, 1e-3)), t_end=1e-7))
+    tol = engine.tables.tolerance
+    on_own = al.wave_curve(al.reference_state(), RIGHT).state_at(2e9)
+    own = engine.tables.table(al, on_own)
+    shifted = _off_table(own, on_own, 2.3 * tol)
+    near = engine.tables.table(al, _off_table(own, on_own, 1.1 * tol))
+    assert near is not own and near.stress_gap(shifted) == pytest.approx(1.2 * tol, rel=0.05)
+    cell = engine.new_region(shifted, al, 0, 0.0, (0.0, 0.0), (1e-4, 0.0), table=own)
+    assert own.stress_gap(cell.state) == pytest.approx(2.3 * tol, rel=0.05)
+    assert _on(engine, cell, near)
+    plain = engine.new_region(on_own, al, 0, 0.0, (0.0, 0.0), (1e-4, 0.0), table=own)
+    assert near.stress_gap(plain.state) == pytest.approx(1.1 * tol, rel=0.05)
+    assert not _on(engine, plain, near)
