@@ -53,6 +53,7 @@ from materials import StateOutOfRangeError
 from .fracture import FractureZone, fracture_zone
 from .grid import Grid, GridTooLarge
 from .isentrope import Isentrope
+from .ray_energy import volume_at_energy
 
 CROSSING, RIGHT_REFLECTION, LEFT_REFLECTION, PASSAGE = 0, 1, 2, 3
 """Kinds of node."""
@@ -134,7 +135,10 @@ class Zone:
     through crossings and reflections to the segments it makes (``Lattice.seg_tag``).
     ``max_nodes``: the zone stops (``"node budget"``) before its node count passes it.
     ``negligible`` (Pa): a contact node's reflection weaker than half of it is dropped
-    (``characteristics.grid``).
+    (``characteristics.grid``).  ``e`` (J/kg, per cell): the specific internal energies
+    the input cells carry (``None``: those of the isentrope); a cell behind a ray may lie
+    off the isentrope by the energy the ray's jump conditions took
+    (``characteristics.ray_energy``), which it keeps while the lattice does not replace it.
     """
 
     table: Isentrope
@@ -155,6 +159,7 @@ class Zone:
     sites: tuple = ()
     max_nodes: int = 10**9
     negligible: float = 0.0
+    e: np.ndarray | None = None
 
 
 @dataclass
@@ -743,7 +748,7 @@ class _March:
             grid = self.grid
             p_all, m_all = np.array(self.cell_p, dtype=int), np.array(self.cell_m, dtype=int)
             out.cell_sigma, out.cell_u = grid.sigma[p_all, m_all], grid.u[p_all, m_all]
-            out.cell_v, out.cell_e = grid.v[p_all, m_all], grid.e[p_all, m_all]
+            out.cell_v, out.cell_e = self._volume_energy(p_all, m_all)
             out.cell_jp, out.cell_jm = grid.p[p_all], grid.m[m_all]
         out.cell_t0 = np.array(self.cell_t0, dtype=float)
         out.cell_t1 = np.full(len(self.cell_t0), np.nan)
@@ -760,6 +765,21 @@ class _March:
         out.cut, out.reason = self.stop
         out.tension_at, out.tension_sample = self.tension
         return out
+
+    def _volume_energy(self, p_all: np.ndarray, m_all: np.ndarray):
+        """Specific volumes (m^3/kg) and internal energies (J/kg) of the cells: the
+        isentrope's, except for an input cell that carries another energy (``Zone.e``),
+        which keeps it, at the volume that keeps its stress."""
+        v, e = self.grid.v[p_all, m_all], self.grid.e[p_all, m_all]
+        if self.zone.e is None:
+            return v, e
+        given = self.zone.e
+        for k in np.flatnonzero(given != e[:given.size]):
+            found = volume_at_energy(self.zone.table.material, float(v[k]), float(e[k]),
+                                     float(given[k]))
+            if found is not None:  # else the isentrope's state (as before)
+                v[k], e[k] = found, given[k]
+        return v, e
 
     def _emitted(self) -> dict:
         """The rays each join sent into its far side, as arrays (each at the characteristic

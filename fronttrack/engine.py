@@ -440,10 +440,10 @@ class Engine:
         mismatch.note_event(self, site or new_site, group, t,
                             sol.left_waves if left_specs is None else (),
                             sol.right_waves if right_specs is None else (), merged)
-        left_star = sol.left_star if left_specs is not None else (
-            region_left.state if region_left is not None else None)
-        right_star = sol.right_star if right_specs is not None else (
-            region_right.state if region_right is not None else None)
+        # the star behind a family whose rays took energy from the states behind them
+        # is its last wave's behind state (outgoing._conserving)
+        left_star = _star(sol.left_star, left_specs, region_left)
+        right_star = _star(sol.right_star, right_specs, region_right)
         middle = site if site is not None else new_site
         if middle is None and left_star is not None and right_star is not None:
             middle = self._entropy_contact(left_star, right_star, material_left, t, x, group)
@@ -458,11 +458,12 @@ class Engine:
             items.append(spec.front)
             last = k == len(left_specs) - 1
             right_of.append(left_star if last else spec.behind)
-            tables.append(UNKNOWN if last else spec.table)
+            tables.append(_star_table(spec, right_specs if middle is None else ())
+                          if last else spec.table)
         if middle is not None:
             items.append(middle)
             right_of.append(right_star)
-            tables.append(UNKNOWN)
+            tables.append(_star_table(right_specs[-1], ()) if right_specs else UNKNOWN)
         for spec in reversed(right_specs):
             items.append(spec.front)
             right_of.append(spec.ahead)
@@ -682,3 +683,26 @@ def _merged(a: State, b: State, weight_a: float = 1.0, weight_b: float = 1.0) ->
     means = {f.name: wa * getattr(a, f.name) + wb * getattr(b, f.name)
              for f in dataclasses.fields(a) if f.name in shared}
     return dataclasses.replace(a, **means)
+
+
+def _star(solved: State, specs, region) -> State | None:
+    """The state behind a family of waves leaving an event: ``region``'s where the
+    family was dropped (``specs`` None), the state behind its last wave where its rays'
+    jumps shifted it (``outgoing._conserving``), else the solved star."""
+    if specs is None:
+        return region.state if region is not None else None
+    return specs[-1].behind if specs and specs[-1].shifted else solved
+
+
+def _star_table(spec, beside) -> object:
+    """The isentrope table of the star region behind ``spec`` (the last wave of a family),
+    ``UNKNOWN`` (looked up from its state) unless its rays shifted it off their table by
+    the energy their jumps took (``outgoing._conserving``): a look-up from the state could
+    then land on a neighbouring isentrope, so it keeps its rays' table, unless it also
+    lies behind the last wave of the other family (``beside``: no contact between) on
+    another table."""
+    if not spec.shifted or spec.table is UNKNOWN or spec.front.kind != FrontKind.RAY:
+        return UNKNOWN
+    if beside and beside[-1].table is not spec.table:
+        return UNKNOWN
+    return spec.table

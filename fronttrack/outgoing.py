@@ -14,9 +14,10 @@ lineage) from a release of another origin (``design.one_dimensional_window``).
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from characteristics.products_table import fan_table
+from characteristics.ray_energy import conserving_state
 from characteristics.simple_waves import discretise_fan, diverging
 from materials import Fan, State, StateOutOfRangeError
 from materials.frozen import slot_init
@@ -51,12 +52,15 @@ def lineage(engine, incoming, site) -> int:
 @dataclass(frozen=True, slots=True)
 class WaveSpec:
     """A new front with the states ahead of and behind it, and the isentrope table of
-    the cell behind it when the wave is a simple wave (``UNKNOWN`` otherwise)."""
+    the cell behind it when the wave is a simple wave (``UNKNOWN`` otherwise).
+    ``shifted``: the state behind carries the energy the jumps of the family's rays
+    took (``_conserving``), off the state the Riemann solution gave."""
 
     front: Front
     ahead: State
     behind: State
     table: object
+    shifted: bool = False
 
 
 def wave_fronts(engine, waves, material, t: float, x: float, incoming,
@@ -97,7 +101,36 @@ def wave_fronts(engine, waves, material, t: float, x: float, incoming,
                                      direction=direction, lineage=origin,
                                      jump=wave.behind.sigma - wave.ahead.sigma)
             specs.append(WaveSpec(front, wave.ahead, wave.behind, UNKNOWN))
-    return specs
+    return _conserving(specs, material, engine.tables.tolerance)
+
+
+def _conserving(specs: list[WaveSpec], material, tolerance: float) -> list[WaveSpec]:
+    """The family ``specs`` (leading first) with the state behind each ray that would
+    create energy carrying the energy its jump conditions need instead
+    (``characteristics.ray_energy.conserving_state``).
+
+    A ray is a jump between two states of one isentrope; at its speed an expansion ray
+    creates energy, third order in its step.  A ray whose conserving state lies within
+    ``tolerance`` (Pa, a stress gap at equal volume) of its isentrope table keeps the
+    table's state: the tables do not tell such isentropes apart, as they do not tell a
+    weak shock from a ray (``_weak_shock_ray``).  From the first ray shifted on, every
+    wave of the family runs into a shifted state, and the state behind it is shifted
+    too where its jump from there would create energy.  The last wave's behind state is
+    the star state (``shifted`` from the first shift on)."""
+    out, ahead, shifted = [], None, False
+    for spec in specs:
+        if shifted:
+            spec = replace(spec, ahead=ahead)
+        if shifted or (spec.front.kind == FrontKind.RAY and spec.table is not UNKNOWN):
+            behind = conserving_state(material, spec.front.speed, spec.ahead, spec.behind)
+            if not shifted and spec.table.matches(behind, tolerance):
+                behind = spec.behind
+            if shifted or behind is not spec.behind:
+                shifted = True
+                spec = replace(spec, behind=behind, shifted=True)
+        out.append(spec)
+        ahead = spec.behind
+    return out
 
 
 def negligible(engine, waves) -> bool:

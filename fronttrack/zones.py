@@ -109,14 +109,24 @@ def _eligible(engine, group: list[Front]):
 
 
 def _on(engine, region: Region | None, table) -> bool:
-    """Whether ``region`` lies on ``table``'s isentrope: its own table, or one within the
-    tolerance of the run's tables (a nearby isentrope it would share a table with)."""
+    """Whether ``region`` lies on ``table``'s isentrope: its own table, or within the
+    tolerance of the run's tables (Pa, a stress gap at equal volume: a nearby isentrope
+    it would share a table with) plus the gap at which it lies off its own table.  A
+    cell behind expansion rays keeps their table below it by the energy their jumps took
+    (``characteristics.ray_energy``); the lattice reads its invariants from its stress
+    and velocity, which the shift keeps, and keeps its energy (``Zone.e``), so that
+    offset is no reason to leave it out of a zone.  The table must reach the region's
+    stress (``covers``): a hot state may lie near an isentrope that ends above it."""
     if region is None or region.material is not table.material:
         return False
     own = engine.table_of(region)
-    return own is table or (own is not None
-                            and table.matches(region.state, engine.tables.tolerance)
-                            and table.covers(region.state.sigma))
+    if own is table:
+        return True
+    if own is None:
+        return False
+    offset = own.stress_gap(region.state)
+    return (table.matches(region.state, engine.tables.tolerance + offset)
+            and table.covers(region.state.sigma))
 
 
 def _ray_cells(rays: list[Front]) -> list[Region]:
@@ -229,7 +239,8 @@ def _zone(engine, run: _Run, t: float) -> moc.Zone:
         left=left, right=right, t_now=t, horizon=horizon, strength=strength,
         carried=tuple(carried), sites=tuple(sites),
         max_nodes=NODES_PER_EVENT * max(engine.acc.max_events - engine.counters.events, 1),
-        negligible=engine.resolution.negligible)
+        negligible=engine.resolution.negligible,
+        e=np.array([c.state.e for c in run.cells]))
 
 
 def _own_invariant(engine, run: _Run, i: int, invariants: list) -> float:
