@@ -1,7 +1,7 @@
 """Which decisions lose (or make) a campaign scene's energy: the balance attributed front
 by front and to the decision that made each front.
 
-    PYTHONPATH=. python benchmarks/balance_attribution.py 349
+    PYTHONPATH=. python benchmarks/balance_attribution.py 349 [--momentum]
 
 Between two events every front is straight and every region constant, so the total
 energy per unit area changes at
@@ -22,6 +22,14 @@ contact not tracked, ``fronttrack.neglect``), ``coalesce`` (``fronttrack.coalesc
 form, ``fronttrack.fragment``), ``ring-down`` (``fronttrack.ringing``), ``exact``
 (none).  A front keeps its tag while it lives (a site lives through many events).  The
 sum matches the run's energy residual to rounding.
+
+``--momentum`` attributes the momentum residual the same way: per unit area it changes at
+
+    dP/dt = sum over fronts of  rho0 U (u_l - u_r) - (sigma_l - sigma_r)
+
+(stress positive in compression; zero for an exact jump), the boundaries adding the
+``sigma`` of the first cell less that of the last; it is given against the momentum
+content ``sum m |u|`` (``momentum_scale`` of ``Solution.conservation``).
 """
 
 from __future__ import annotations
@@ -30,6 +38,8 @@ import argparse
 import collections
 import sys
 import time
+from collections.abc import Callable
+from dataclasses import dataclass
 from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
@@ -42,9 +52,37 @@ from fronttrack import engine as engine_module  # noqa: E402
 from fronttrack.runner import run  # noqa: E402
 
 
-def _live_energy(engine, t: float, rates) -> float:
-    """Total energy (J/m^2) of the live regions, each front taken at ``t`` (s) or, if
-    it starts later (spliced by a lattice), at its own start: the energy at ``t`` of
+@dataclass(frozen=True)
+class Quantity:
+    """A conserved quantity: its ``density`` per unit mass of a state (J/kg or m/s), the
+    ``rate`` (W/m^2 or Pa) a front of Lagrangian speed ``U`` makes between its left and
+    right states (``rate(rho0, U, left, right)``), the ``flux`` a boundary feeds into the
+    cell beside it (``sigma u`` or ``sigma``) and the keys of its residual, boundary
+    integral and scale in ``Solution.conservation()``."""
+
+    name: str
+    density: Callable
+    rate: Callable
+    flux: Callable
+    error: str
+    boundary: str
+    scale: str
+
+
+ENERGY = Quantity(
+    "energy", lambda s: s.e + 0.5 * s.u * s.u,
+    lambda rho0, speed, left, right: dropped.creation_rate(rho0, speed, right, left, +1),
+    lambda s: s.sigma * s.u, "energy_error", "work", "energy_scale")
+MOMENTUM = Quantity(
+    "momentum", lambda s: s.u,
+    lambda rho0, speed, left, right: (rho0 * speed * (left.u - right.u)
+                                      - (left.sigma - right.sigma)),
+    lambda s: s.sigma, "momentum_error", "impulse", "momentum_scale")
+
+
+def _live_total(engine, t: float, rates, quantity: Quantity) -> float:
+    """Total ``quantity`` (J/m^2 or kg/(m s)) of the live regions, each front taken at
+    ``t`` (s) or, if it starts later (spliced by a lattice), at its own start: the total at ``t`` of
     the fronts extrapolated back, plus each late front's ``rate`` (W/m^2, ``rates``
     maps front ids to them) times the time to its start.  Regions between fronts
     extrapolated past each other count with a negative width: the total is linear in
@@ -53,48 +91,50 @@ def _live_energy(engine, t: float, rates) -> float:
     while front is not None and front.next is not None:
         region, width = front.region_right, front.next.position(t) - front.position(t)
         if region is not None:
-            state = region.state
-            total += region.material.rho0 * width * (state.e + 0.5 * state.u * state.u)
+            total += region.material.rho0 * width * quantity.density(region.state)
         total += rates.get(front.id, 0.0) * max(front.t0 - t, 0.0)
         front = front.next
     return total
 
 
-def _rates(engine) -> dict:
-    """``{front id: (front, dE/dt W/m^2)}`` of every front whose jump is not exact."""
+def _rates(engine, quantity: Quantity) -> dict:
+    """``{front id: (front, rate)}`` of every front whose jump does not conserve
+    ``quantity`` (rate in W/m^2 or Pa)."""
     found, front = {}, engine.head
     while front is not None:
         left = front.prev.region_right if front.prev is not None else None
         right = front.region_right if front.next is not None else None
         if left is not None and right is not None:
             # a site does not move: the rho0 U term vanishes across an interface too
-            rate = dropped.creation_rate(left.material.rho0,
-                                         0.0 if front.is_site else front.speed,
-                                         right.state, left.state, +1)
+            rate = quantity.rate(left.material.rho0, 0.0 if front.is_site else front.speed,
+                                 left.state, right.state)
             if rate != 0.0:
                 found[front.id] = (front, rate)
         front = front.next
     return found
 
 
-def _boundary_power(engine) -> float:
-    """Work rate (W/m^2) of the boundaries on the live cells beside them, ``sigma u`` of
-    the first cell less that of the last (the run's balance takes it from the cells it
-    recorded there: inside a lattice those are the lattice's, not the cell at its cut)."""
+def _boundary_rate(engine, quantity: Quantity) -> float:
+    """Rate (W/m^2 or Pa) at which the boundaries feed ``quantity`` into the live cells
+    beside them, the flux of the first cell less that of the last (the run's balance
+    takes it from the cells it recorded there: inside a lattice those are the
+    lattice's, not the cell at its cut)."""
     first, last = engine.head, engine.head
     while last.next is not None:
         last = last.next
     power = 0.0
     for region, sign in ((first.region_right, 1.0), (last.prev.region_right, -1.0)):
         if region is not None:
-            power += sign * region.state.sigma * region.state.u
+            power += sign * quantity.flux(region.state)
     return power
 
 
 class Attribution:
-    """Patches the engine to attribute energy to fronts and decisions while a run goes."""
+    """Patches the engine to attribute a quantity's residual (``ENERGY`` by default) to
+    fronts and decisions while a run goes."""
 
-    def __init__(self):
+    def __init__(self, quantity: Quantity = ENERGY):
+        self.quantity = quantity
         self.by_tag, self.jumps = collections.Counter(), collections.Counter()
         self.by_front, self.info, self.tags = collections.Counter(), {}, {}
         self.decisions, self.rates, self.last_t, self.newest = [], {}, 0.0, 0
@@ -115,12 +155,13 @@ class Attribution:
     def event(self, engine, t: float, process) -> None:
         """Run ``process()``, the event at ``t`` (s), and book the change of the total."""
         self.advance(t)
-        before = _live_energy(engine, t, {i: r for i, (_, r) in self.rates.items()})
+        before = _live_total(engine, t, {i: r for i, (_, r) in self.rates.items()},
+                             self.quantity)
         process()
-        rates = _rates(engine)
+        rates = _rates(engine, self.quantity)
         tag = "+".join(sorted(set(self.decisions))) or "exact"
-        self.jumps[tag] += _live_energy(engine, t, {i: r for i, (_, r) in rates.items()}) \
-            - before
+        self.jumps[tag] += _live_total(engine, t, {i: r for i, (_, r) in rates.items()},
+                                       self.quantity) - before
         front, newest = engine.head, self.newest
         while front is not None:
             if front.id > newest:
@@ -128,7 +169,7 @@ class Attribution:
                 self.newest = max(self.newest, front.id)
             front = front.next
         self.rates = rates
-        self.power = _boundary_power(engine)
+        self.power = _boundary_rate(engine, self.quantity)
 
     def install(self) -> None:
         process, wave_fronts = engine_module.Engine._process, outgoing.wave_fronts
@@ -175,18 +216,21 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("seed", type=int)
     parser.add_argument("--fronts", type=int, default=8, help="largest fronts to list")
+    parser.add_argument("--momentum", action="store_true",
+                        help="attribute the momentum residual instead of the energy's")
     args = parser.parse_args()
-    attribution = Attribution()
+    quantity = MOMENTUM if args.momentum else ENERGY
+    attribution = Attribution(quantity)
     attribution.install()
     start = time.process_time()
     solution = run(campaign_scene(args.seed, max_events=200_000))
     cpu = time.process_time() - start
     attribution.advance(solution.scene.t_end)  # the fronts alive at the end
     balance, conservation = solution.accuracy_report["balance"], solution.conservation()
-    scale = conservation["energy_scale"]
-    # fronts a lattice spliced count from the event, at their cells' states: the work the
-    # boundaries did on the lattice's own cells differs, and belongs to the lattice
-    attribution.jumps["lattice"] += attribution.work - conservation["work"]
+    scale = conservation[quantity.scale]
+    # fronts a lattice spliced count from the event, at their cells' states: the work (or
+    # impulse) the boundaries gave the lattice's own cells differs, and belongs to it
+    attribution.jumps["lattice"] += attribution.work - conservation[quantity.boundary]
 
     def percent(counter):
         return {k: round(float(100.0 * v / scale), 3) for k, v in counter.most_common()
@@ -195,16 +239,16 @@ def main() -> None:
     print(f"seed {args.seed}: {solution.stats['events']} events, {cpu:.1f} s CPU; momentum "
           f"{balance['momentum_error']:.3g}, energy {balance['energy_error']:.3g}, promise "
           f"{balance['promised']:.3g}")
-    print("  fronts by the decision that made them (% of the energy content):",
+    print(f"  fronts by the decision that made them (% of the {quantity.name} content):",
           percent(attribution.by_tag))
     print("  changes at events:", percent(attribution.jumps))
     total = sum(attribution.by_tag.values()) + sum(attribution.jumps.values())
     print(f"  attributed in all: {100.0 * total / scale:.4f} %")
-    for front_id, energy in sorted(attribution.by_front.items(),
+    for front_id, amount in sorted(attribution.by_front.items(),
                                    key=lambda item: -abs(item[1]))[:args.fronts]:
         kind, tag, t0, x0 = attribution.info[front_id]
         print(f"    {kind} {front_id} ({tag}) from {t0 * 1e6:.4f} us, {x0 * 1e3:.4f} mm: "
-              f"{100.0 * energy / scale:.4f} %")
+              f"{100.0 * amount / scale:.4f} %")
 
 
 if __name__ == "__main__":

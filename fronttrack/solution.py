@@ -677,8 +677,9 @@ class Solution:
         the totals at 0 and ``t``, the boundary impulse and work, and the residuals
         ``momentum_error`` and ``energy_error`` (absolute) with their relative sizes:
         momentum against the largest of the momentum content ``sum m |u|`` at 0 and
-        ``t`` and the impulse, energy against the largest of the energy content ``sum m
-        (|e| + u^2/2)`` at 0 and ``t`` and the work (``energy_scale``).
+        ``t`` and the impulse (``momentum_scale``), energy against the largest of the
+        energy content ``sum m (|e| + u^2/2)`` at 0 and ``t`` and the work
+        (``energy_scale``).
         """
         t = self.scene.t_end if t is None else t
 
@@ -712,6 +713,7 @@ class Solution:
             "momentum": (p0, p1), "impulse": impulse,
             "momentum_error": p1 - p0 - impulse,
             "momentum_relative_error": abs(p1 - p0 - impulse) / kinetic_scale,
+            "momentum_scale": kinetic_scale,
             "energy": (e0, e1), "work": work,
             "energy_error": e1 - e0 - work,
             "energy_relative_error": abs(e1 - e0 - work) / energy_scale,
