@@ -560,3 +560,27 @@ def test_engine_plastic_impact_precursor_arrival():
     rear = sol.state_at(6e-3, 0.65e-6)
     assert rear.sigma == 0.0 and rear.u == pytest.approx(2 * precursor.behind.u, rel=5e-3)
     assert min(AL.dissipated_energy(r.state) for r in sol.regions) >= 0.0
+
+
+def test_a_target_within_rounding_below_the_yield_stress_is_the_yield_point():
+    # campaign seed 426: the elastic branch's closed form ends 2e-5 Pa below yield_high
+    # (2.357 GPa); a contact asked for a stress between the two, which lay on neither
+    # branch ("root not bracketed").  Within rounding of the knee on either side, the
+    # elastic wave alone reaches it.
+    from random_scenes import campaign_scene
+
+    from materials import State
+    material = campaign_scene(426).layers[1].material
+    ahead = State(sigma=92973128.67324549, u=94.61271400402734, v=6.89828374430389e-05,
+                  e=10082.352646975423, plastic_strain=0.0028752580571004445)
+    curve = material.wave_curve(ahead, LEFT, "hugoniot")
+    knee = curve.yield_high
+    below = 2357048828.404881
+    assert knee - 1e-12 * knee < below < knee
+    du, dv = curve.velocity_change(below)
+    du_knee, _ = curve.velocity_change(knee)
+    assert du == pytest.approx(du_knee, rel=1e-12, abs=0.0)
+    # and the branches on either side still meet it continuously
+    for step in (1e-6, 1e-3):
+        for sigma in (knee * (1.0 - step), knee * (1.0 + step)):
+            assert curve.velocity_change(sigma)[0] == pytest.approx(du_knee, rel=2 * step)
