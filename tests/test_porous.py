@@ -367,3 +367,29 @@ def test_compaction_beyond_the_matrix_range_is_a_named_error_not_an_internal_one
     message = str(caught.value)
     assert message.startswith("foam: stress 0.27657 GPa is outside the range reachable")
     assert "(-0.0991221 to 0.270922 GPa)" in message and "bracketed" not in message
+
+
+def test_a_target_within_rounding_of_the_start_is_no_wave():
+    # campaign seed 551: Cu powder asked for a stress one ulp below its own, which maps
+    # onto its matrix's own stress: the matrix sent no wave and the mapping indexed the
+    # last of none (IndexError)
+    from materials import State, get
+    powder = get("Cu_powder")
+    ahead = State(sigma=215069501.8845104, u=71.09780793272913, v=0.00014828378725666953,
+                  e=1389.3410058405484, plastic_strain=0.04920527188733459)
+    curve = powder.wave_curve(ahead, 1, "isentrope")
+    assert curve.waves(215069501.88451037) == ()
+
+
+def test_a_compaction_below_the_start_states_rounding_is_no_jump():
+    # campaign seed 680: a compaction from 0.144965 GPa by 0.06 Pa (4e-10 of it) had no
+    # root beside its start (the recorded state meets its equation of state to about
+    # that) and stopped the run with "leaves the volume range"
+    from materials import State, get
+    powder = get("Cu_powder")
+    ahead = State(sigma=144965249.26499394, u=-290.9230693930952, v=0.0001554714002226347,
+                  e=95.13874333213168, plastic_strain=0.003550659145636459)
+    for direction in (-1, 1):
+        curve = powder.wave_curve(ahead, direction, "isentrope")
+        du, slope = curve.velocity_change(144965249.3247953)
+        assert abs(du) < 1e-6 and 0.0 < slope < math.inf  # du/dsigma, 1/impedance
