@@ -128,34 +128,18 @@ def energy_behind(rho0: float, speed: float, ahead: tuple, behind: tuple) -> flo
     return behind[2] - energy_residual(rho0, speed, left, right) / (rho0 * abs(speed))
 
 
-VOLUME_NEWTON_STEPS = 30
-"""Most Newton steps for the volume of a shifted state (a shift third order in a ray's
-step takes one or two; a gas near vacuum, whose energy a ray may halve, a few more)."""
-
 VOLUME_ROUNDING = 1e-9
 """Relative stress mismatch within which the volume of a shifted state is found."""
 
 
 def volume_at_energy(material, v: float, e: float, e_new: float) -> float | None:
     """Specific volume (m^3/kg) near ``v`` at which ``material`` at energy ``e_new`` (J/kg)
-    has the stress it has at ``(v, e)``; ``None`` where Newton's method does not find it
-    to ``VOLUME_ROUNDING`` (no such state: a gas whose energy would fall below zero).  A
-    material whose stress does not depend on the energy keeps ``v``."""
+    has the stress it has at ``(v, e)`` (``Material.volume_at``, to ``VOLUME_ROUNDING``);
+    ``None`` where there is none near (a gas whose energy would fall below zero)."""
     target = material.stress(v, e)
-    allowed = VOLUME_ROUNDING * (abs(target) + material.rho0 * abs(e_new - e))
-    w = v
-    for _ in range(VOLUME_NEWTON_STEPS):
-        gap = material.stress(w, e_new) - target
-        if abs(gap) <= allowed:
-            return w
-        h = 1e-7 * w
-        slope = (material.stress(w + h, e_new) - material.stress(w, e_new)) / h
-        if not slope < 0.0:  # not a state of compressive stiffness
-            return None
-        w -= gap / slope
-        if not (math.isfinite(w) and w > 0.0):
-            return None
-    return None
+    tolerance = VOLUME_ROUNDING * (abs(target) + material.rho0 * abs(e_new - e))
+    return material.volume_at(State(sigma=target, u=0.0, v=v, e=e), target, e_new,
+                              tolerance)
 
 
 def conserving_state(material, speed: float, ahead: State, behind: State) -> State:

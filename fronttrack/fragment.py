@@ -379,7 +379,7 @@ def _at_energy(material, rest: State, e: float, u: float, scale: float) -> State
     """The state of zero stress, velocity ``u`` and internal energy ``e`` (its volume
     from the equation of state, near ``rest``'s, the stress zero within
     ``ringing.ENERGY_ROUNDING`` of ``scale``, Pa), or ``None``."""
-    v = ringing._volume_at(material, rest, 0.0, e, ringing.ENERGY_ROUNDING * scale)
+    v = material.volume_at(rest, 0.0, e, ringing.ENERGY_ROUNDING * scale)
     if v is None:
         return None
     return State(sigma=0.0, u=u, v=v, e=e)
@@ -570,7 +570,7 @@ def _offset(material, state: State, offset: float, scale: float) -> State:
     if offset == 0.0:
         return state
     e = state.e + offset
-    v = ringing._volume_at(material, state, state.sigma, e, ringing.ENERGY_ROUNDING * scale)
+    v = material.volume_at(state, state.sigma, e, ringing.ENERGY_ROUNDING * scale)
     return dataclasses.replace(state, e=e, v=v if v is not None else state.v)
 
 

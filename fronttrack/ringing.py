@@ -60,7 +60,6 @@ import math
 
 from materials import WavediagramError, solve_boundary, solve_contact
 from materials.riemann import RiemannSolution
-from materials.state import State
 
 from . import coalesce, fragment
 from .interactions import contact_strength
@@ -282,40 +281,10 @@ def _energy_keeping(engine, material, rep, star, regions, widths):
     scale = max(abs(star.sigma), engine.resolution.stress_scale)
     if hasattr(material, "stress_at"):  # elastic-plastic: stress does not depend on e
         return dataclasses.replace(on_curve, e=e), e - on_curve.e
-    v = _volume_at(material, on_curve, star.sigma, e, ENERGY_ROUNDING * scale)
+    v = material.volume_at(on_curve, star.sigma, e, ENERGY_ROUNDING * scale)
     if v is None:
         return None
     return dataclasses.replace(on_curve, v=v, e=e), e - on_curve.e
-
-
-def _volume_at(material, near: State, sigma: float, e: float, tolerance: float):
-    """The volume (m^3/kg) near ``near``'s where the stress at energy ``e`` with ``near``'s
-    history (a porous body's distension) is ``sigma`` (secant steps), or ``None`` (also
-    where that volume lies outside the equation of state's range)."""
-    v_min, v_max = material.volume_range()
-
-    def residual(v):
-        if not v_min < v < v_max:
-            return math.nan
-        try:
-            return material.stress_with_history(near, v, e) - sigma
-        except (WavediagramError, ValueError):
-            return math.nan
-
-    guess = near.v
-    v0, f0 = guess, residual(guess)
-    if abs(f0) <= tolerance:
-        return guess
-    v1 = guess * (1.0 - 1e-7)
-    f1 = residual(v1)
-    for _ in range(40):
-        if not math.isfinite(f0 + f1) or f1 == f0:
-            return None
-        v0, f0, v1 = v1, f1, v1 - f1 * (v1 - v0) / (f1 - f0)
-        f1 = residual(v1)
-        if abs(f1) <= tolerance:
-            return v1
-    return None
 
 
 def _replace(engine, left: _Face, right: _Face, waves, regions, sol, layer_state,

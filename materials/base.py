@@ -34,7 +34,7 @@ from abc import ABC, abstractmethod
 
 import numpy as np
 
-from .errors import MaterialError, StateOutOfRangeError
+from .errors import MaterialError, StateOutOfRangeError, WavediagramError
 from .quadrature import (
     UNIT_NODES,
     UNIT_WEIGHTS,
@@ -84,6 +84,10 @@ def require_positive(name: str, value: float, what: str) -> float:
     return number
 
 
+VOLUME_SECANT_STEPS = 40
+"""Most secant steps of ``Material.volume_at`` (a change of energy at fixed stress moves
+the volume by a small fraction: a few steps; a gas whose energy halves, a dozen)."""
+
 class Material(ABC):
     """A material's equation of state and the wave curves it induces.
 
@@ -124,6 +128,38 @@ class Material(ABC):
         """Stress (Pa) at ``(v, e)`` of a point with the history variables of ``history``
         (a porous body's distension); ``stress(v, e)`` for a material without any."""
         return self.stress(v, e)
+
+    def volume_at(self, near: State, sigma: float, e: float, tolerance: float
+                  ) -> float | None:
+        """The specific volume (m^3/kg) near ``near.v`` at which a point with ``near``'s
+        history (``stress_with_history``) has stress ``sigma`` (Pa) at specific internal
+        energy ``e`` (J/kg), to ``tolerance`` (Pa), by secant steps; ``None`` where they
+        do not find it (no such state near, or one outside ``volume_range``).  Used where
+        energy moves at a fixed stress: a layer's limit state, a fragment's rest state,
+        the cell behind a ray that carries its jump's energy."""
+        v_min, v_max = self.volume_range()
+
+        def residual(v):
+            if not v_min < v < v_max:
+                return math.nan
+            try:
+                return self.stress_with_history(near, v, e) - sigma
+            except (WavediagramError, ValueError):
+                return math.nan
+
+        v0, f0 = near.v, residual(near.v)
+        if abs(f0) <= tolerance:
+            return v0
+        v1 = v0 * (1.0 - 1e-7)
+        f1 = residual(v1)
+        for _ in range(VOLUME_SECANT_STEPS):
+            if not math.isfinite(f0 + f1) or f1 == f0:
+                return None
+            v0, f0, v1 = v1, f1, v1 - f1 * (v1 - v0) / (f1 - f0)
+            f1 = residual(v1)
+            if abs(f1) <= tolerance:
+                return v1
+        return None
 
     @abstractmethod
     def sound_speed(self, v: float, e: float) -> float:
