@@ -81,7 +81,8 @@ class Front:
     NaN for a ray without an isentrope table).  For sites: ``bond``, ``strength``
     (tension it carries, Pa), ``side`` of a boundary, and the gap's ``gap_width``
     (Eulerian, m) at ``gap_time``; a piston boundary that separated from its face keeps
-    its ``piston_velocity`` (m/s, ``None`` while in contact) and the gap the same way.
+    its ``piston_velocity`` (m/s, ``None`` while in contact) and the gap the same way;
+    a stress boundary whose tension tore the material off its face is ``torn``.
     ``history`` records ``(t, kind)`` changes of a site's
     kind; ``boundary_steps`` the ``(t, value)`` steps of a prescribed history;
     ``earlier_regions`` records ``(t, region_id)``: the region on the right until ``t``.
@@ -120,6 +121,7 @@ class Front:
     gap_time: float = 0.0
     gap_version: int = 0
     piston_velocity: float | None = None
+    torn: bool = False
     history: list = field(default_factory=list)
     boundary_steps: list = field(default_factory=list)
     earlier_regions: list = field(default_factory=list)

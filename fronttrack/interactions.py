@@ -135,8 +135,7 @@ def _boundary(engine, site, region_left, region_right, t, incoming, timer):
     release = engine.resolution.release
     kind = EventKind.REFLECTION if incoming else EventKind.BOUNDARY
     if spec.kind in (BoundaryKind.FREE, BoundaryKind.STRESS):
-        return kind, solve_boundary(region.material, region.state, site.side, stress=value,
-                                    release=release)
+        return _traction(engine, site, region, value, t, kind)
     if spec.kind == BoundaryKind.VELOCITY and spec.bond != "bonded" \
             or site.piston_velocity is not None:
         return _piston(engine, site, region, value, t, kind)
@@ -149,7 +148,47 @@ def _boundary(engine, site, region_left, region_right, t, incoming, timer):
     # a wall or bonded piston pulling beyond the most tension the equation of state
     # carries: the material cavitates at the face, which comes free of the boundary
     engine.counters.cavitations += 1
+    limit = _most_tension(region, site.side, release)
+    spall.record(engine, site.x0, t, limit, limit, region.layer)
     return _piston(engine, site, region, value, t, kind)
+
+
+def _most_tension(region, side: str, release: str) -> float:
+    """The most tension (Pa, positive) the material at a boundary's face can reach from
+    its state: the tensile end of the range of the wave curve it reflects along."""
+    direction = 1 if side == "left" else -1
+    low, _ = region.material.wave_curve(region.state, direction, release).sigma_limits()
+    return -low
+
+
+def _traction(engine, site, region, stress: float, t: float, kind):
+    """A prescribed stress ``stress`` (Pa, tension negative) on the face at time ``t`` (s).
+
+    Tension beyond what the material can carry, its spall strength or else the most
+    tension its equation of state reaches, fractures it at the face: the skin the load
+    pulls on tears off (a ``SPALL`` event at the face, in ``spall``; a material without
+    a spall strength cavitates), and the face is free from then on.  A torn face still
+    takes compression, which presses the torn skin back onto it, but no tension.
+    """
+    release = engine.resolution.release
+    if site.torn:
+        stress = max(stress, 0.0)
+    strength = contact_strength(engine, None, region.material)
+    if stress >= -strength:
+        try:
+            return kind, solve_boundary(region.material, region.state, site.side,
+                                        stress=stress, release=release)
+        except StateOutOfRangeError:
+            if stress >= 0.0:
+                raise
+        engine.counters.cavitations += 1  # beyond the equation of state: cavitation
+        strength = _most_tension(region, site.side, release)
+    if not site.torn:
+        site.torn = True
+        site.history.append((t, FrontKind.GAP))  # apart from its load from now on
+    spall.record(engine, site.x0, t, -stress, strength, region.layer)
+    return EventKind.SPALL, solve_boundary(region.material, region.state, site.side,
+                                           stress=0.0, release=release)
 
 
 def _pulls(region, side: str, velocity: float, release) -> bool:

@@ -535,7 +535,8 @@ class Solution:
 
     def _piston_gaps(self, side: str) -> list[tuple[float, float]]:
         """The ``(t_open, t_close)`` intervals (s) during which a piston boundary was apart
-        from its face (``fronttrack.interactions._piston``)."""
+        from its face (``fronttrack.interactions._piston``), or a stress boundary had torn
+        the material off it (``_traction``: from the tear on)."""
         intervals, opened = [], None
         for t, kind in self.front_table.site_history(FrontKind.BOUNDARY, side):
             if kind == FrontKind.GAP:
@@ -831,10 +832,15 @@ def _held(boundary, t: float, state: State, apart=()) -> State:
     """A state at an end of the stack with the quantity its boundary prescribes held
     exactly (the reconstruction between two rays reaching a free surface gives its zero
     stress only to rounding).  While a piston is ``apart`` from its face (``(t_open,
-    t_close)`` intervals, s), the face is free."""
-    if boundary.kind in ("free", "stress") or any(a <= t < b for a, b in apart):
-        value = boundary.value_at(t) if boundary.kind in ("free", "stress") else 0.0
+    t_close)`` intervals, s), the face is free; a face a stress tore off its load
+    (``fronttrack.interactions._traction``) takes compression only."""
+    torn = any(a <= t < b for a, b in apart)
+    if boundary.kind in ("free", "stress"):
+        value = boundary.value_at(t)
+        value = max(value, 0.0) if torn else value
         return state if state.sigma == value else dataclasses.replace(state, sigma=value)
+    if torn:
+        return state if state.sigma == 0.0 else dataclasses.replace(state, sigma=0.0)
     value = boundary.value_at(t)
     return state if state.u == value else dataclasses.replace(state, u=value)
 
