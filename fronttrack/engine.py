@@ -513,8 +513,9 @@ class Engine:
             counters.unresolved_contacts += 1
         if keep:
             return self.new_front(FrontKind.CONTACT, x, t, bond="bonded")
-        counters.neglected_entropy = max(counters.neglected_entropy, jump)
-        counters.neglected_contacts += jump > ENTROPY_JUMP_TOLERANCE
+        counters.neglected_entropy = max(counters.neglected_entropy, float(jump))
+        if jump > ENTROPY_JUMP_TOLERANCE:
+            counters.neglected_contacts += 1
         return None
 
     def _neglected_contact_state(self, left: State, right: State, material) -> State:

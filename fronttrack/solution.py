@@ -748,11 +748,12 @@ class Solution:
         for index, (key, value) in enumerate(self._document(probes, polygons)):
             stream.write(("," if index else "") + json.dumps(key) + ":")
             if not isinstance(value, Iterator):
-                stream.write(json.dumps(value, separators=(",", ":")))
+                stream.write(json.dumps(value, separators=(",", ":"), default=_json_number))
                 continue
             stream.write("[")
             for count, item in enumerate(value):
-                stream.write(("," if count else "") + json.dumps(item, separators=(",", ":")))
+                stream.write(("," if count else "") + json.dumps(item, separators=(",", ":"),
+                                                                 default=_json_number))
                 done += 1
                 if progress is not None and done % JSON_PROGRESS_STEP == 0:
                     progress(done, total)
@@ -857,6 +858,14 @@ def _state_in(record: History, x: float) -> State:
     return State(sigma=a.sigma + f * (b.sigma - a.sigma), u=a.u + f * (b.u - a.u),
                  v=a.v + f * (b.v - a.v), e=a.e + f * (b.e - a.e),
                  plastic_strain=a.plastic_strain)
+
+
+def _json_number(value):
+    """A numpy scalar (a counter incremented by a numpy comparison, a float64 position)
+    as the Python number JSON writes; anything else is a bug, raised as JSON would."""
+    if isinstance(value, np.generic):
+        return value.item()
+    raise TypeError(f"Object of type {type(value).__name__} is not JSON serializable")
 
 
 def _finite_or_none(value: float):

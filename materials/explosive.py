@@ -381,6 +381,10 @@ class DetonationCurve(StressRange):
         if sigma < self.cj.state.sigma:
             front = Shock(ahead=a, behind=self.cj_state, speed=d * self.cj.speed, direction=d)
             (fan,) = self.fan.waves(sigma)
+            if isinstance(fan, Shock):
+                # ``release = "hugoniot"``: the Taylor wave is one rarefaction shock, its
+                # chord under the Rayleigh line's tangency slower than D
+                return (front, fan)
             # the Taylor wave's head is sonic, C_L(CJ) = D; it is given a speed a hair
             # (HEAD_LAG) below D, never an ulp above, so that it never overtakes the
             # detonation and the CJ cell between them keeps its place in X

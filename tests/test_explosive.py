@@ -114,6 +114,21 @@ def test_cj_detonation_and_taylor_wave(jump_conditions):
     assert m.products.isentrope_constant(fan.behind) == pytest.approx(k, rel=1e-12)
 
 
+def test_taylor_wave_with_hugoniot_release_is_one_rarefaction_shock(jump_conditions):
+    """``release = "hugoniot"``: below p_CJ the Taylor wave is one rarefaction shock on
+    the products' Hugoniot through CJ, slower than the detonation (its chord lies under
+    the Rayleigh line's tangency).  It crashed before (the fan's head speed was set on a
+    shock), on a random command-line scene."""
+    m = library.get("PBX9501")
+    curve = DetonationCurve(m, m.reference_state(), RIGHT, "hugoniot")
+    front, rarefaction = curve.waves(10e9)
+    jump_conditions(front, m)
+    jump_conditions(rarefaction, m.products)
+    assert rarefaction.ahead == front.behind
+    assert rarefaction.behind.sigma == pytest.approx(10e9, rel=1e-12)
+    assert 0.0 < rarefaction.speed < front.speed
+
+
 @pytest.mark.parametrize("name", ["TNT-book", "PBX9501"])
 def test_detonation_curve_monotone_and_smooth_at_cj(name):
     m = library.get(name)

@@ -3,6 +3,7 @@ the compact JSON."""
 
 from __future__ import annotations
 
+import io
 import json
 
 import numpy as np
@@ -85,3 +86,18 @@ def test_figures_in_a_chosen_format_and_resolution(tmp_path):
     assert (out / "xt.svg").read_text().lstrip().startswith("<?xml")
     assert not list(out.glob("*.png"))
     assert main(["run", str(scene), "-o", str(tmp_path / "bad"), "--dpi", "5"]) == 2
+
+
+def test_numpy_scalars_in_the_report_are_written_as_numbers():
+    """A counter incremented by a numpy comparison is a numpy integer (a random
+    TNT/Ti/Be scene's ``neglected_entropy_contacts`` was, after 1 181 neglects, and
+    its JSON stopped with "int64 is not JSON serializable" after the solve); the
+    document writes any numpy scalar as the number it holds."""
+    solution = ft.run(pulse_scene())
+    solution.accuracy_report["neglected_entropy_contacts"] = np.int64(1181)
+    solution.accuracy_report["neglected_entropy_volume_jump"] = np.float32(0.25)
+    stream = io.StringIO()
+    solution.write_json(stream)
+    accuracy = json.loads(stream.getvalue())["accuracy"]
+    assert accuracy["neglected_entropy_contacts"] == 1181
+    assert accuracy["neglected_entropy_volume_jump"] == 0.25
