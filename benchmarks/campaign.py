@@ -66,16 +66,18 @@ def _one(seed: int, queue, cpu_limit: float) -> None:
                "cpu_seconds": time.process_time() - start})
 
 
-def run_scene(seed: int, limit: float) -> dict:
+def run_scene(seed: int, limit: float, wall_factor: float = 10.0) -> dict:
     """Run scene ``seed`` in a child process stopped after ``limit`` seconds of its CPU time.
 
     The child is killed by ``SIGXCPU`` at the limit (reported as ``time limit``), or after
-    ten times the limit of wall-clock time if it is still alive then.
+    ``wall_factor`` times the limit of wall-clock time if it is still alive then (on a
+    loaded machine a process gets a fraction of a core: raise it there, or the wall
+    clock, not the CPU limit, decides).
     """
     queue = multiprocessing.Queue()
     process = multiprocessing.Process(target=_one, args=(seed, queue, limit))
     process.start()
-    process.join(10 * limit)
+    process.join(wall_factor * limit)
     if process.is_alive():
         process.kill()
         process.join()
@@ -94,6 +96,9 @@ def main() -> None:
     parser.add_argument("--time-limit", type=float, default=5.0,
                         help="CPU seconds allowed to each scene (whole seconds)")
     parser.add_argument("--workers", type=int, default=2)
+    parser.add_argument("--wall-factor", type=float, default=10.0,
+                        help="wall-clock seconds allowed per CPU second before a scene is "
+                             "stopped (raise it on a loaded machine)")
     parser.add_argument("--out", type=Path, default=HERE / "campaign.json")
     parser.add_argument("--log", type=Path, default=None,
                         help="append each outcome as one JSON line when it is known (a "
@@ -103,7 +108,7 @@ def main() -> None:
     from concurrent.futures import ThreadPoolExecutor
 
     def one(seed):
-        result = run_scene(seed, args.time_limit)
+        result = run_scene(seed, args.time_limit, args.wall_factor)
         if args.log is not None:
             with args.log.open("a") as log:
                 log.write(json.dumps(result) + "\n")
