@@ -147,10 +147,46 @@ class Resolution:
             "coalesce_length": self.coalesce_length,
         }
 
+    def fan_velocity_step(self, material, *states: State) -> float:
+        """The largest velocity step (m/s) one characteristic of a wave of ``material``
+        between ``states`` may span: ``velocity_step``, and at most the relative resolution
+        ``step / stress_scale`` of the larger Eulerian sound speed ``c = C_L v / v0`` of
+        the states.
+
+        A characteristic is a jump between two states of one isentrope at one speed, so it
+        makes energy at a rate third order in its step (``characteristics.ray_energy``);
+        in an ideal gas that rate is ``(gamma + 1) rho du^3 / 16`` to leading order
+        (``rho`` the density, ``du`` the velocity step), a fraction of order ``(du/c)^3``
+        of the specific energy ``c^2`` of the mass it sweeps, and a layer's ``~c/du``
+        characteristics sweep its mass once a transit: ``(du/c)^2`` per transit, second
+        order in the step relative to the local sound speed as the records are in
+        ``step / stress_scale``.  The scene's ``velocity_step`` is relative to the
+        largest velocity jump instead, a gas's escape speed ``2 c / (gamma - 1)``, three
+        to five times ``c``, and it stays fixed while a gas expands and its ``c`` falls
+        (campaign seed 652: steps of 0.4-0.8 ``c`` created 2 % of the energy).  In a
+        solid ``du / c = d sigma / (rho0 C_L^2)`` is the step over the modulus, far
+        below ``step / stress_scale``: the bound does not act.  A state at vacuum
+        (infinite volume) or beyond its equation of state's range sets no bound."""
+        speeds = [_eulerian_sound_speed(material, s) for s in states]
+        if not any(c > 0.0 for c in speeds):
+            return self.velocity_step
+        return min(self.velocity_step, self.step / self.stress_scale * max(speeds))
+
     def is_negligible(self, stress_jump: float, velocity_jump: float) -> bool:
         """Whether a wave of these jumps (Pa, m/s) is weaker than the run resolves."""
         return (abs(stress_jump) <= self.negligible
                 and abs(velocity_jump) <= self.negligible_velocity)
+
+
+def _eulerian_sound_speed(material, state: State) -> float:
+    """The Eulerian sound speed ``c = C_L v / v0`` (m/s) of ``state``; zero at vacuum
+    (infinite volume) or where ``material`` has none (beyond its range or spinodal)."""
+    if not math.isfinite(state.v):
+        return 0.0
+    try:
+        return material.sound_speed(state.v, state.e) * state.v / material.v0
+    except StateOutOfRangeError:
+        return 0.0
 
 
 def initial_state(layer, where: str = "layer") -> State:
