@@ -20,7 +20,11 @@ stress_scale`` with ``velocity_scale`` the largest velocity jump of the initial 
 problems (at least ``stress_scale`` over the smallest impedance of a solid, so that a
 solid's waves, whose velocity and stress go together, are resolved and neglected as
 before by their stress alone), and no characteristic
-of a fan, and no compression wave taken for a characteristic, spans more than that.
+of a fan, and no compression wave taken for a characteristic, spans more than that, nor
+more than ``step / stress_scale`` of its material's initial sound speed over the
+square root of the material's share of the energy (``material_velocity_step``: a gas's
+characteristics make energy second order in their step relative to the gas's own
+sound speed, which an escape speed overstates three to five times).
 
 Waves weaker than the negligible stress are dropped (and counted).  The default is
 ``NEGLIGIBLE_FRACTION`` of the stress scale, raised to ``NEGLIGIBLE_STEP_FRACTION`` of
@@ -111,7 +115,8 @@ class Resolution:
     the records, below which two fronts of one family become one
     (``fronttrack.coalesce``; by default the record tolerance's fraction of the stress
     scale, at most ``DEFAULT_RECORD_FRACTION``, times the stack's length: 15 um for a
-    15 mm stack).
+    15 mm stack).  ``material_velocity_steps``: ``(material, step)`` pairs, the velocity step
+    (m/s) of each material's characteristics (``material_velocity_step``).
     """
 
     stress_scale: float
@@ -128,6 +133,7 @@ class Resolution:
     makes_fans: bool
     coalesce_length: float = 0.0
     record_constant: float = RECORD_ERROR_CONSTANT
+    material_velocity_steps: tuple = ()
 
     def report(self) -> dict:
         """The resolution as the ``accuracy`` section of a solution reports it."""
@@ -147,35 +153,66 @@ class Resolution:
             "coalesce_length": self.coalesce_length,
         }
 
-    def fan_velocity_step(self, material, *states: State) -> float:
+    def velocity_step_of(self, material) -> float:
         """The largest velocity step (m/s) one characteristic of a wave of ``material``
-        between ``states`` may span: ``velocity_step``, and at most the relative resolution
-        ``step / stress_scale`` of the larger Eulerian sound speed ``c = C_L v / v0`` of
-        the states.
-
-        A characteristic is a jump between two states of one isentrope at one speed, so it
-        makes energy at a rate third order in its step (``characteristics.ray_energy``);
-        in an ideal gas that rate is ``(gamma + 1) rho du^3 / 16`` to leading order
-        (``rho`` the density, ``du`` the velocity step), a fraction of order ``(du/c)^3``
-        of the specific energy ``c^2`` of the mass it sweeps, and a layer's ``~c/du``
-        characteristics sweep its mass once a transit: ``(du/c)^2`` per transit, second
-        order in the step relative to the local sound speed as the records are in
-        ``step / stress_scale``.  The scene's ``velocity_step`` is relative to the
-        largest velocity jump instead, a gas's escape speed ``2 c / (gamma - 1)``, three
-        to five times ``c``, and it stays fixed while a gas expands and its ``c`` falls
-        (campaign seed 652: steps of 0.4-0.8 ``c`` created 2 % of the energy).  In a
-        solid ``du / c = d sigma / (rho0 C_L^2)`` is the step over the modulus, far
-        below ``step / stress_scale``: the bound does not act.  A state at vacuum
-        (infinite volume) or beyond its equation of state's range sets no bound."""
-        speeds = [_eulerian_sound_speed(material, s) for s in states]
-        if not any(c > 0.0 for c in speeds):
-            return self.velocity_step
-        return min(self.velocity_step, self.step / self.stress_scale * max(speeds))
+        spans (``material_velocity_steps``; ``velocity_step`` for a material not
+        listed)."""
+        for listed, step in self.material_velocity_steps:
+            if listed is material:
+                return step
+        return self.velocity_step
 
     def is_negligible(self, stress_jump: float, velocity_jump: float) -> bool:
         """Whether a wave of these jumps (Pa, m/s) is weaker than the run resolves."""
         return (abs(stress_jump) <= self.negligible
                 and abs(velocity_jump) <= self.negligible_velocity)
+
+
+def material_velocity_step(scene: Scene, states: list[State], material, relative: float,
+                           velocity_step: float) -> float:
+    """The largest velocity step (m/s) of a characteristic of ``material``: the scene's
+    ``velocity_step``, and at most ``relative`` (the step over the stress scale) of the
+    material's initial Eulerian sound speed ``c`` over the square root of its ``share``
+    of the initial energy (its layers' internal energy ``sum rho0 L |e|`` over the
+    content of all layers ``sum rho0 L (|e| + u^2/2)``, J/m^2).
+
+    A characteristic is a jump between two states of one isentrope at one speed, so it
+    makes energy at a rate third order in its step (``characteristics.ray_energy``); in
+    an ideal gas that rate is ``(gamma + 1) rho du^3 / 16`` to leading order (``rho`` the
+    density, ``du`` the velocity step), a fraction of order ``(du/c)^3`` of the internal
+    energy (order ``c^2`` per unit mass) of the mass it sweeps, and a layer's ``~c/du``
+    characteristics sweep its mass once a transit: relative to the run's energy,
+    ``share (du/c)^2`` per transit, second order as the records are in ``step /
+    stress_scale``.  The scene's ``velocity_step`` is relative to the largest velocity
+    jump instead, a gas's escape speed ``2 c / (gamma - 1)``, three to five times ``c``
+    (campaign seed 652: steps of 0.4-0.8 ``c`` created 2 % of the energy).  The bound
+    is the initial state's, not each wave's: as a gas expands its ``c`` falls, but so
+    does its density and the rate; a wave near vacuum bounded by its own ``c`` was cut
+    again at every reflection (seed 458: fans of Pa to vacuum in five rays each).  A
+    material with a small share is not refined for it (a 50 um gas layer behind 13 mm
+    of water and lead, seed 758, holds 1e-5).  In a solid ``du / c = d sigma / (rho0
+    C_L^2)`` is the step over the modulus, far below ``relative``: the bound does not
+    act.  A material without initial internal energy or sound speed keeps
+    ``velocity_step``."""
+    content = internal = c = 0.0
+    for layer, state in zip(scene.layers, states, strict=True):
+        mass = layer.material.rho0 * layer.thickness
+        content += mass * (abs(state.e) + 0.5 * state.u * state.u)
+        if layer.material is material:
+            internal += mass * abs(state.e)
+            c = max(c, _eulerian_sound_speed(material, state))
+    if not (internal > 0.0 and c > 0.0):
+        return velocity_step
+    return min(velocity_step, relative * c / math.sqrt(internal / content))
+
+
+def _materials(scene: Scene) -> list:
+    """The distinct materials of ``scene``'s layers, in order."""
+    found = []
+    for layer in scene.layers:
+        if not any(m is layer.material for m in found):
+            found.append(layer.material)
+    return found
 
 
 def _eulerian_sound_speed(material, state: State) -> float:
@@ -233,7 +270,11 @@ def resolve(scene: Scene, states: list[State]) -> Resolution:
                       release=release, makes_fans=makes_fans, record_constant=constant,
                       coalesce_length=(acc.coalesce_length if acc.coalesce_length is not None
                                        else min(stress_tol / scale, DEFAULT_RECORD_FRACTION)
-                                       * length))
+                                       * length),
+                      material_velocity_steps=tuple(
+                          (material, material_velocity_step(scene, states, material, step / scale,
+                                                            step * velocity_ratio))
+                          for material in _materials(scene)))
 
 
 def _step(scene: Scene, scale: float, stress_tol: float, constant: float
