@@ -164,7 +164,7 @@ def _weak_shock_ray(engine, shock, material, t, x, parent, direction,
     if not getattr(material, "makes_fans", False):
         return None  # no isentrope table (characteristics.isentrope): its shocks stay shocks
     if res.release != "isentrope" or abs(shock.behind.u - shock.ahead.u) > \
-            res.velocity_step_of(material):
+            res.velocity_step_of(material, shock.ahead, shock.behind):
         return None
     table = engine.tables.table(material, shock.ahead)
     if table is None or not table.matches(shock.behind, engine.tables.tolerance):
@@ -212,7 +212,7 @@ def _fan_fronts(engine, fan: Fan, material, t, x, parent, direction,
     # a one-ray wave uses the table of its isentrope if there is one already; a family
     # of several characteristics (which lattices will cross) builds one
     res = engine.resolution
-    velocity_step = res.velocity_step_of(material)
+    velocity_step = res.velocity_step_of(material, fan.ahead, fan.behind)
     several = (abs(fan.behind.sigma - fan.ahead.sigma) > res.step
                or abs(fan.behind.u - fan.ahead.u) > velocity_step)
     table = (engine.tables.table(material, fan.ahead, build=several)

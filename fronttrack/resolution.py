@@ -21,10 +21,11 @@ problems (at least ``stress_scale`` over the smallest impedance of a solid, so t
 solid's waves, whose velocity and stress go together, are resolved and neglected as
 before by their stress alone), and no characteristic
 of a fan, and no compression wave taken for a characteristic, spans more than that, nor
-more than ``step / stress_scale`` of its material's initial sound speed over the
-square root of the material's share of the energy (``material_velocity_step``: a gas's
-characteristics make energy second order in their step relative to the gas's own
-sound speed, which an escape speed overstates three to five times).
+more than ``step / stress_scale`` of its sound speed (not below half the material's
+initial one) over the square root of the material's share of the energy
+(``sound_bound``: a gas's characteristics make energy second order in their step
+relative to the gas's own sound speed, which an escape speed overstates three to five
+times).
 
 Waves weaker than the negligible stress are dropped (and counted).  The default is
 ``NEGLIGIBLE_FRACTION`` of the stress scale, raised to ``NEGLIGIBLE_STEP_FRACTION`` of
@@ -115,8 +116,10 @@ class Resolution:
     the records, below which two fronts of one family become one
     (``fronttrack.coalesce``; by default the record tolerance's fraction of the stress
     scale, at most ``DEFAULT_RECORD_FRACTION``, times the stack's length: 15 um for a
-    15 mm stack).  ``material_velocity_steps``: ``(material, step)`` pairs, the velocity step
-    (m/s) of each material's characteristics (``material_velocity_step``).
+    15 mm stack).  ``sound_bounds``: ``(material, factor, c0)`` triples: a material's
+    characteristics span at most ``factor`` times the sound speed of the states they
+    join, not below ``SOUND_FLOOR`` times its initial sound speed ``c0`` (m/s)
+    (``sound_bound``, ``velocity_step_of``).
     """
 
     stress_scale: float
@@ -133,7 +136,7 @@ class Resolution:
     makes_fans: bool
     coalesce_length: float = 0.0
     record_constant: float = RECORD_ERROR_CONSTANT
-    material_velocity_steps: tuple = ()
+    sound_bounds: tuple = ()
 
     def report(self) -> dict:
         """The resolution as the ``accuracy`` section of a solution reports it."""
@@ -153,13 +156,15 @@ class Resolution:
             "coalesce_length": self.coalesce_length,
         }
 
-    def velocity_step_of(self, material) -> float:
+    def velocity_step_of(self, material, *states: State) -> float:
         """The largest velocity step (m/s) one characteristic of a wave of ``material``
-        spans (``material_velocity_steps``; ``velocity_step`` for a material not
-        listed)."""
-        for listed, step in self.material_velocity_steps:
+        between ``states`` spans: ``velocity_step``, and for a material listed in
+        ``sound_bounds`` at most its factor times the larger Eulerian sound speed of the
+        states, taken no lower than ``SOUND_FLOOR`` of its initial one (``sound_bound``)."""
+        for listed, factor, c0 in self.sound_bounds:
             if listed is material:
-                return step
+                c = max([_eulerian_sound_speed(material, s) for s in states] + [0.0])
+                return min(self.velocity_step, factor * max(c, SOUND_FLOOR * c0))
         return self.velocity_step
 
     def is_negligible(self, stress_jump: float, velocity_jump: float) -> bool:
@@ -168,13 +173,20 @@ class Resolution:
                 and abs(velocity_jump) <= self.negligible_velocity)
 
 
-def material_velocity_step(scene: Scene, states: list[State], material, relative: float,
-                           velocity_step: float) -> float:
-    """The largest velocity step (m/s) of a characteristic of ``material``: the scene's
-    ``velocity_step``, and at most ``relative`` (the step over the stress scale) of the
-    material's initial Eulerian sound speed ``c`` over the square root of its ``share``
-    of the initial energy (its layers' internal energy ``sum rho0 L |e|`` over the
-    content of all layers ``sum rho0 L (|e| + u^2/2)``, J/m^2).
+SOUND_FLOOR = 0.5
+"""The sound speed that bounds a characteristic's velocity step (``sound_bound``) is
+taken no lower than this fraction of the material's initial one."""
+
+
+def sound_bound(scene: Scene, states: list[State], material,
+                relative: float) -> tuple[float, float] | None:
+    """``(factor, c0)``: a characteristic of ``material`` spans at most ``factor`` times
+    the Eulerian sound speed ``c`` of the states it joins, ``relative`` (the step over
+    the stress scale) over the square root of the material's ``share`` of the initial
+    energy (its layers' internal energy ``sum rho0 L |e|`` over the content of all layers
+    ``sum rho0 L (|e| + u^2/2)``, J/m^2), with ``c`` no lower than ``SOUND_FLOOR`` of
+    its largest initial one ``c0`` (m/s); ``None`` for a material without initial
+    internal energy or sound speed.
 
     A characteristic is a jump between two states of one isentrope at one speed, so it
     makes energy at a rate third order in its step (``characteristics.ray_energy``); in
@@ -184,26 +196,26 @@ def material_velocity_step(scene: Scene, states: list[State], material, relative
     characteristics sweep its mass once a transit: relative to the run's energy,
     ``share (du/c)^2`` per transit, second order as the records are in ``step /
     stress_scale``.  The scene's ``velocity_step`` is relative to the largest velocity
-    jump instead, a gas's escape speed ``2 c / (gamma - 1)``, three to five times ``c``
-    (campaign seed 652: steps of 0.4-0.8 ``c`` created 2 % of the energy).  The bound
-    is the initial state's, not each wave's: as a gas expands its ``c`` falls, but so
-    does its density and the rate; a wave near vacuum bounded by its own ``c`` was cut
-    again at every reflection (seed 458: fans of Pa to vacuum in five rays each).  A
-    material with a small share is not refined for it (a 50 um gas layer behind 13 mm
-    of water and lead, seed 758, holds 1e-5).  In a solid ``du / c = d sigma / (rho0
-    C_L^2)`` is the step over the modulus, far below ``relative``: the bound does not
-    act.  A material without initial internal energy or sound speed keeps
-    ``velocity_step``."""
-    content = internal = c = 0.0
+    jump instead, a gas's escape speed ``2 c / (gamma - 1)``, three to five times ``c``,
+    and stays fixed while an expanding gas's ``c`` falls (campaign seed 652: rays of
+    0.4-0.8 ``c`` created 2 % of the energy).  Near vacuum ``c`` goes to zero, and so do
+    the density and the rate: bounded by their own ``c``, fans of a few Pa to vacuum
+    were cut into five rays at every reflection (seed 458: from 7 909 events to the time
+    limit); ``SOUND_FLOOR`` stops that (at half its sound speed a gas has an eighth of
+    its density or less).  A material with a small share is not refined for it (a 50 um
+    gas layer behind 13 mm of water and lead, seed 758, holds 1e-5).  In a solid ``du /
+    c = d sigma / (rho0 C_L^2)`` is the step over the modulus, far below ``relative``:
+    the bound does not act."""
+    content = internal = c0 = 0.0
     for layer, state in zip(scene.layers, states, strict=True):
         mass = layer.material.rho0 * layer.thickness
         content += mass * (abs(state.e) + 0.5 * state.u * state.u)
         if layer.material is material:
             internal += mass * abs(state.e)
-            c = max(c, _eulerian_sound_speed(material, state))
-    if not (internal > 0.0 and c > 0.0):
-        return velocity_step
-    return min(velocity_step, relative * c / math.sqrt(internal / content))
+            c0 = max(c0, _eulerian_sound_speed(material, state))
+    if not (internal > 0.0 and c0 > 0.0):
+        return None
+    return relative / math.sqrt(internal / content), c0
 
 
 def _materials(scene: Scene) -> list:
@@ -271,10 +283,9 @@ def resolve(scene: Scene, states: list[State]) -> Resolution:
                       coalesce_length=(acc.coalesce_length if acc.coalesce_length is not None
                                        else min(stress_tol / scale, DEFAULT_RECORD_FRACTION)
                                        * length),
-                      material_velocity_steps=tuple(
-                          (material, material_velocity_step(scene, states, material, step / scale,
-                                                            step * velocity_ratio))
-                          for material in _materials(scene)))
+                      sound_bounds=tuple(
+                          (material, *bound) for material in _materials(scene)
+                          if (bound := sound_bound(scene, states, material, step / scale))))
 
 
 def _step(scene: Scene, scale: float, stress_tol: float, constant: float

@@ -163,7 +163,7 @@ def test_campaign_327_a_gas_fan_to_vacuum_keeps_its_promise():
     # expansion rays; its momentum, 0.53 % (the fans' rays, third order each), is
     # within the promise (0.057 %, energy -0.030 %) since a gas's rays span at most
     # step / stress_scale of its sound speed over the square root of its share of the
-    # energy (``fronttrack.resolution.material_velocity_step``): 50 m/s, not 231
+    # energy (``fronttrack.resolution.sound_bound``): 50 m/s, not 231
     balance = run(_campaign_327()).accuracy_report["balance"]
     assert abs(balance["energy_error"]) <= balance["promised"]
     assert balance["momentum_error"] <= balance["promised"]
@@ -198,19 +198,28 @@ def test_a_gas_ringing_against_a_wall_creates_no_energy_beyond_its_promise():
 
 def test_a_gas_fan_spans_at_most_the_relative_step_of_its_sound_speed():
     # the velocity step of a gas's characteristics is bounded by step / stress_scale of
-    # its initial Eulerian sound speed over the square root of its share of the initial
-    # energy (its internal energy over the content of all layers); in a solid (du / c =
-    # d sigma / (rho0 C_L^2), far below the relative step) the bound does not act and
-    # the scene's velocity step stays
+    # the larger Eulerian sound speed of the states they join (no lower than half the
+    # initial one: a wave to vacuum, c = 0) over the square root of the gas's share of
+    # the initial energy (its internal energy over the content of all layers); in a
+    # solid (du / c = d sigma / (rho0 C_L^2), far below the relative step) the bound does
+    # not act and the scene's velocity step stays
     from fronttrack.engine import Engine
+    from fronttrack.resolution import SOUND_FLOOR
     engine = Engine(_gas_against_a_wall())
     res = engine.resolution
     gas = engine.scene.layers[0].material
     start = engine.initial_states[0]
     c = gas.eulerian_sound_speed(start.v, start.e)
-    assert res.velocity_step_of(gas) == pytest.approx(res.step / res.stress_scale * c,
-                                                      rel=1e-12)
-    assert res.velocity_step_of(gas) < res.velocity_step / 4
+    relative = res.step / res.stress_scale
+    vacuum = State(sigma=0.0, u=1141.0, v=math.inf, e=0.0)
+    assert res.velocity_step_of(gas, start, vacuum) == pytest.approx(relative * c, rel=1e-12)
+    assert res.velocity_step_of(gas, start) < res.velocity_step / 4
+    assert res.velocity_step_of(gas, vacuum) == pytest.approx(relative * SOUND_FLOOR * c,
+                                                              rel=1e-12)
+    compressed = gas.initial_state(4.0 * start.sigma, 0.0)  # on its Hugoniot: hotter
+    assert res.velocity_step_of(gas, compressed) == pytest.approx(
+        min(res.velocity_step, relative * gas.eulerian_sound_speed(compressed.v,
+                                                                  compressed.e)), rel=1e-12)
     # beside 20 um of copper at 100 m/s (81 % of the energy) the bound is 1/sqrt(0.19)
     # = 2.3 times wider; beside 10 mm of it, the gas holds 0.05 % and is not refined
     cu = get("Cu")
@@ -222,11 +231,12 @@ def test_a_gas_fan_spans_at_most_the_relative_step_of_its_sound_speed():
         share = gas_energy / (gas_energy + cu.rho0 * thickness * 0.5 * 100.0**2)
         expected = min(mixed.velocity_step,
                        mixed.step / mixed.stress_scale * c / math.sqrt(share))
-        assert mixed.velocity_step_of(gas) == pytest.approx(expected, rel=1e-12)
-        assert mixed.velocity_step_of(cu) == mixed.velocity_step
-    assert share < 1e-3 and mixed.velocity_step_of(gas) == mixed.velocity_step
+        assert mixed.velocity_step_of(gas, start) == pytest.approx(expected, rel=1e-12)
+        assert mixed.velocity_step_of(cu, cu.reference_state()) == mixed.velocity_step
+    assert share < 1e-3 and mixed.velocity_step_of(gas, start) == mixed.velocity_step
     shocked = Engine(Scene(layers=(Layer(cu, 1e-3, 500.0), Layer(cu, 1e-3)), t_end=1e-7))
-    assert shocked.resolution.velocity_step_of(cu) == shocked.resolution.velocity_step
+    assert shocked.resolution.velocity_step_of(cu, cu.reference_state()) == \
+        shocked.resolution.velocity_step
 
 
 def _off_table(table, state: State, gap: float) -> State:
