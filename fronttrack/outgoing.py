@@ -163,7 +163,8 @@ def _weak_shock_ray(engine, shock, material, t, x, parent, direction,
     res = engine.resolution
     if not getattr(material, "makes_fans", False):
         return None  # no isentrope table (characteristics.isentrope): its shocks stay shocks
-    if res.release != "isentrope" or abs(shock.behind.u - shock.ahead.u) > res.velocity_step:
+    if res.release != "isentrope" or abs(shock.behind.u - shock.ahead.u) > \
+            res.velocity_step_of(material, shock.ahead, shock.behind):
         return None
     table = engine.tables.table(material, shock.ahead)
     if table is None or not table.matches(shock.behind, engine.tables.tolerance):
@@ -211,8 +212,9 @@ def _fan_fronts(engine, fan: Fan, material, t, x, parent, direction,
     # a one-ray wave uses the table of its isentrope if there is one already; a family
     # of several characteristics (which lattices will cross) builds one
     res = engine.resolution
+    velocity_step = res.velocity_step_of(material, fan.ahead, fan.behind)
     several = (abs(fan.behind.sigma - fan.ahead.sigma) > res.step
-               or abs(fan.behind.u - fan.ahead.u) > res.velocity_step)
+               or abs(fan.behind.u - fan.ahead.u) > velocity_step)
     table = (engine.tables.table(material, fan.ahead, build=several)
              if res.release == "isentrope" else None)
     # vacuum (a gas expanded to zero pressure) ends every isentrope of the gas
@@ -226,12 +228,12 @@ def _fan_fronts(engine, fan: Fan, material, t, x, parent, direction,
     # detonation products: their own table places the characteristics (equal steps of
     # stress and velocity towards vacuum); the cells keep none (no lattice, no reading)
     own = fan_table(fan) if table is None and res.release == "isentrope" else None
-    characteristics = discretise_fan(fan, material, res.step, table or own, res.velocity_step)
+    characteristics = discretise_fan(fan, material, res.step, table or own, velocity_step)
     if table is not None and not diverging(characteristics):
         # the table's isentrope is too far from the fan's own for its steps: the curve's
         # exact states (characteristics.simple_waves.diverging)
         table = None
-        characteristics = discretise_fan(fan, material, res.step, None, res.velocity_step)
+        characteristics = discretise_fan(fan, material, res.step, None, velocity_step)
     if len(characteristics) == 1 and parent is not None and parent.kind == FrontKind.RAY:
         fan_id, index, count = parent.fan, parent.ray_index, parent.ray_count
     else:

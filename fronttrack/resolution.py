@@ -20,7 +20,12 @@ stress_scale`` with ``velocity_scale`` the largest velocity jump of the initial 
 problems (at least ``stress_scale`` over the smallest impedance of a solid, so that a
 solid's waves, whose velocity and stress go together, are resolved and neglected as
 before by their stress alone), and no characteristic
-of a fan, and no compression wave taken for a characteristic, spans more than that.
+of a fan, and no compression wave taken for a characteristic, spans more than that, nor
+more than ``step / stress_scale`` of its sound speed (not below half the material's
+initial one) over the square root of the material's share of the energy
+(``sound_bound``: a gas's characteristics make energy second order in their step
+relative to the gas's own sound speed, which an escape speed overstates three to five
+times).
 
 Waves weaker than the negligible stress are dropped (and counted).  The default is
 ``NEGLIGIBLE_FRACTION`` of the stress scale, raised to ``NEGLIGIBLE_STEP_FRACTION`` of
@@ -111,7 +116,10 @@ class Resolution:
     the records, below which two fronts of one family become one
     (``fronttrack.coalesce``; by default the record tolerance's fraction of the stress
     scale, at most ``DEFAULT_RECORD_FRACTION``, times the stack's length: 15 um for a
-    15 mm stack).
+    15 mm stack).  ``sound_bounds``: ``(material, factor, c0)`` triples: a material's
+    characteristics span at most ``factor`` times the sound speed of the states they
+    join, not below ``SOUND_FLOOR`` times its initial sound speed ``c0`` (m/s)
+    (``sound_bound``, ``velocity_step_of``).
     """
 
     stress_scale: float
@@ -128,6 +136,7 @@ class Resolution:
     makes_fans: bool
     coalesce_length: float = 0.0
     record_constant: float = RECORD_ERROR_CONSTANT
+    sound_bounds: tuple = ()
 
     def report(self) -> dict:
         """The resolution as the ``accuracy`` section of a solution reports it."""
@@ -147,10 +156,86 @@ class Resolution:
             "coalesce_length": self.coalesce_length,
         }
 
+    def velocity_step_of(self, material, *states: State) -> float:
+        """The largest velocity step (m/s) one characteristic of a wave of ``material``
+        between ``states`` spans: ``velocity_step``, and for a material listed in
+        ``sound_bounds`` at most its factor times the larger Eulerian sound speed of the
+        states, taken no lower than ``SOUND_FLOOR`` of its initial one (``sound_bound``)."""
+        for listed, factor, c0 in self.sound_bounds:
+            if listed is material:
+                c = max([_eulerian_sound_speed(material, s) for s in states] + [0.0])
+                return min(self.velocity_step, factor * max(c, SOUND_FLOOR * c0))
+        return self.velocity_step
+
     def is_negligible(self, stress_jump: float, velocity_jump: float) -> bool:
         """Whether a wave of these jumps (Pa, m/s) is weaker than the run resolves."""
         return (abs(stress_jump) <= self.negligible
                 and abs(velocity_jump) <= self.negligible_velocity)
+
+
+SOUND_FLOOR = 0.5
+"""The sound speed that bounds a characteristic's velocity step (``sound_bound``) is
+taken no lower than this fraction of the material's initial one."""
+
+
+def sound_bound(scene: Scene, states: list[State], material,
+                relative: float) -> tuple[float, float] | None:
+    """``(factor, c0)``: a characteristic of ``material`` spans at most ``factor`` times
+    the Eulerian sound speed ``c`` of the states it joins, ``relative`` (the step over
+    the stress scale) over the square root of the material's ``share`` of the initial
+    energy (its layers' internal energy ``sum rho0 L |e|`` over the content of all layers
+    ``sum rho0 L (|e| + u^2/2)``, J/m^2), with ``c`` no lower than ``SOUND_FLOOR`` of
+    its largest initial one ``c0`` (m/s); ``None`` for a material without initial
+    internal energy or sound speed.
+
+    A characteristic is a jump between two states of one isentrope at one speed, so it
+    makes energy at a rate third order in its step (``characteristics.ray_energy``); in
+    an ideal gas that rate is ``(gamma + 1) rho du^3 / 16`` to leading order (``rho`` the
+    density, ``du`` the velocity step), a fraction of order ``(du/c)^3`` of the internal
+    energy (order ``c^2`` per unit mass) of the mass it sweeps, and a layer's ``~c/du``
+    characteristics sweep its mass once a transit: relative to the run's energy,
+    ``share (du/c)^2`` per transit, second order as the records are in ``step /
+    stress_scale``.  The scene's ``velocity_step`` is relative to the largest velocity
+    jump instead, a gas's escape speed ``2 c / (gamma - 1)``, three to five times ``c``,
+    and stays fixed while an expanding gas's ``c`` falls (campaign seed 652: rays of
+    0.4-0.8 ``c`` created 2 % of the energy).  Near vacuum ``c`` goes to zero, and so do
+    the density and the rate: bounded by their own ``c``, fans of a few Pa to vacuum
+    were cut into five rays at every reflection (seed 458: from 7 909 events to the time
+    limit); ``SOUND_FLOOR`` stops that (at half its sound speed a gas has an eighth of
+    its density or less).  A material with a small share is not refined for it (a 50 um
+    gas layer behind 13 mm of water and lead, seed 758, holds 1e-5).  In a solid ``du /
+    c = d sigma / (rho0 C_L^2)`` is the step over the modulus, far below ``relative``:
+    the bound does not act."""
+    content = internal = c0 = 0.0
+    for layer, state in zip(scene.layers, states, strict=True):
+        mass = layer.material.rho0 * layer.thickness
+        content += mass * (abs(state.e) + 0.5 * state.u * state.u)
+        if layer.material is material:
+            internal += mass * abs(state.e)
+            c0 = max(c0, _eulerian_sound_speed(material, state))
+    if not (internal > 0.0 and c0 > 0.0):
+        return None
+    return relative / math.sqrt(internal / content), c0
+
+
+def _materials(scene: Scene) -> list:
+    """The distinct materials of ``scene``'s layers, in order."""
+    found = []
+    for layer in scene.layers:
+        if not any(m is layer.material for m in found):
+            found.append(layer.material)
+    return found
+
+
+def _eulerian_sound_speed(material, state: State) -> float:
+    """The Eulerian sound speed ``c = C_L v / v0`` (m/s) of ``state``; zero at vacuum
+    (infinite volume) or where ``material`` has none (beyond its range or spinodal)."""
+    if not math.isfinite(state.v):
+        return 0.0
+    try:
+        return material.sound_speed(state.v, state.e) * state.v / material.v0
+    except StateOutOfRangeError:
+        return 0.0
 
 
 def initial_state(layer, where: str = "layer") -> State:
@@ -197,7 +282,10 @@ def resolve(scene: Scene, states: list[State]) -> Resolution:
                       release=release, makes_fans=makes_fans, record_constant=constant,
                       coalesce_length=(acc.coalesce_length if acc.coalesce_length is not None
                                        else min(stress_tol / scale, DEFAULT_RECORD_FRACTION)
-                                       * length))
+                                       * length),
+                      sound_bounds=tuple(
+                          (material, *bound) for material in _materials(scene)
+                          if (bound := sound_bound(scene, states, material, step / scale))))
 
 
 def _step(scene: Scene, scale: float, stress_tol: float, constant: float
