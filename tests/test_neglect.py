@@ -123,3 +123,36 @@ def test_neglects_that_lose_energy_are_held_to_the_budget_too():
     assert balance["momentum_error"] <= balance["promised"]
     assert report["neglected_contact_cost"] > 0.0
     assert not any("energy lost" in line for line in report["warnings"])
+
+
+def _ramped_pistons_scene() -> Scene:
+    # campaign seed 89: 0.2 mm of a linear elastic solid on 3 mm of Ni prestressed to
+    # 58 MPa, pushed at 500 m/s from the left and by a piston ramped to 500 m/s over
+    # 0.6 us from the right; isentrope release, default resolution (promise 0.2 %)
+    from materials import LinearElastic
+    m0 = LinearElastic("M0", 3530.5613890071927, 7929.410546363515)
+    return Scene(layers=(Layer(m0, 0.2e-3, 0.0),
+                         Layer(get("Ni"), 3e-3, 0.0, stress=57960889.2141608)),
+                 left=Boundary("velocity", ((0.0, 500.0),)),
+                 right=Boundary("velocity", ((0.0, 0.0), (6.059622158826085e-07, 500.0))),
+                 t_end=2.0198740529420284e-06, accuracy=Accuracy(max_events=20000))
+
+
+def test_what_the_neglects_lose_together_is_held_to_half_the_promise():
+    # before: 548 contacts neglected, each within a quarter of the promise, lost
+    # 0.197 % of the energy together (balance -0.205 %, beyond the 0.2 % promise);
+    # the colder states taken behind the waves on the hotter sides lose
+    # rho0 |U| |e_L - e_R| while those waves run, and once that sum with the next
+    # contact's bound exceeds half the promise the contact is tracked
+    solution = run(_ramped_pistons_scene())
+    report = solution.accuracy_report
+    balance = report["balance"]
+    assert -balance["promised"] <= balance["energy_error"] < 0.0
+    assert balance["momentum_error"] <= balance["promised"]
+    assert not any("energy lost" in line for line in report["warnings"])
+    content = solution.conservation()["energy_scale"]
+    lost = report["neglected_contact_loss"] / content
+    # half the promise of the content as the budget last measured it (8.6e6 J/m^2 at
+    # 1.3 us; the budget never shrinks) is 0.8 of the promise of the final energy scale
+    # (5.3e6 J/m^2): the neglects alone lose less than the promise
+    assert 0.0 < lost <= balance["promised"]
