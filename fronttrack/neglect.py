@@ -123,8 +123,8 @@ def follow(engine, left, right, material, left_fronts, right_fronts) -> None:
     was dropped, the nearest wave of the other runs beside the hotter state instead)."""
     hot, cold = (left_fronts, right_fronts) if left.e > right.e else (right_fronts, left_fronts)
     wave = hot[-1] if hot else cold[-1] if cold else None
-    if wave is not None:
-        rate = material.rho0 * abs(left.e - right.e) * abs(wave.speed)
+    rate = material.rho0 * abs(left.e - right.e) * abs(wave.speed) if wave is not None else 0.0
+    if rate > 0.0:
         engine.neglect_budget.losing.append((wave, rate))
 
 
