@@ -236,7 +236,7 @@ class Solution:
             "neglected_contact_energy": counters.neglected_contact_energy,
             "neglected_contact_cost": counters.neglect_cost,
             "neglected_history_cost": counters.history_cost,
-            "neglected_contact_loss": neglect.lost_so_far(engine.neglect_budget, engine.t_end),
+            "neglected_contact_moved": neglect.moved_so_far(engine.neglect_budget, engine.t_end),
             "dropped_wave_cost": dropped.cost(engine),
             "cavitations": counters.cavitations,
             "release_floors": {name: {"stress": stress, "faces": count}
