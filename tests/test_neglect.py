@@ -123,3 +123,64 @@ def test_neglects_that_lose_energy_are_held_to_the_budget_too():
     assert balance["momentum_error"] <= balance["promised"]
     assert report["neglected_contact_cost"] > 0.0
     assert not any("energy lost" in line for line in report["warnings"])
+
+
+def _ramped_pistons_scene() -> Scene:
+    # campaign seed 89: 0.2 mm of a linear elastic solid on 3 mm of Ni prestressed to
+    # 58 MPa, pushed at 500 m/s from the left and by a piston ramped to 500 m/s over
+    # 0.6 us from the right; isentrope release, default resolution (promise 0.2 %)
+    from materials import LinearElastic
+    m0 = LinearElastic("M0", 3530.5613890071927, 7929.410546363515)
+    return Scene(layers=(Layer(m0, 0.2e-3, 0.0),
+                         Layer(get("Ni"), 3e-3, 0.0, stress=57960889.2141608)),
+                 left=Boundary("velocity", ((0.0, 500.0),)),
+                 right=Boundary("velocity", ((0.0, 0.0), (6.059622158826085e-07, 500.0))),
+                 t_end=2.0198740529420284e-06, accuracy=Accuracy(max_events=20000))
+
+
+def test_what_the_neglects_move_together_is_held_to_half_the_promise():
+    # before: 548 contacts neglected, each within a quarter of the promise, lost
+    # 0.197 % of the energy together (balance -0.205 %, beyond the 0.2 % promise);
+    # the colder states taken behind the waves on the hotter sides lose
+    # rho0 |U| |e_L - e_R| while those waves run, and once that sum with the next
+    # contact's bound exceeds half the promise the contact is tracked
+    solution = run(_ramped_pistons_scene())
+    report = solution.accuracy_report
+    balance = report["balance"]
+    assert -balance["promised"] <= balance["energy_error"] < 0.0
+    assert balance["momentum_error"] <= balance["promised"]
+    assert not any("energy lost" in line for line in report["warnings"])
+    content = solution.conservation()["energy_scale"]
+    moved = report["neglected_contact_moved"] / content
+    # half the promise of the content as the budget last measured it (8.6e6 J/m^2 at
+    # 1.3 us; the budget never shrinks) is 0.8 of the promise of the final energy scale
+    # (5.3e6 J/m^2): the neglects alone move less than the promise
+    assert 0.0 < moved <= balance["promised"]
+
+
+def test_a_neglect_moves_energy_along_the_wave_beside_the_wrong_state():
+    # the colder star state is taken behind the innermost wave on the hotter side: it
+    # loses rho0 |U| |e_L - e_R| while it runs, and what it lost is counted at its end
+    from fronttrack import neglect
+    from fronttrack.engine import Engine
+    from fronttrack.fronts import Front
+    from fronttrack.kinds import FrontKind
+    engine = Engine(_overtaking_scene())
+    mo = get("Mo")
+    hot = State(sigma=1e9, u=50.0, v=mo.v0 * 0.99, e=1200.0)
+    cold = State(sigma=1e9, u=50.0, v=mo.v0 * 0.99, e=1000.0)
+    lead = Front(1, FrontKind.RAY, 1e-3, 1e-7, speed=-5000.0)
+    tail = Front(2, FrontKind.RAY, 1e-3, 1e-7, speed=-4500.0)
+    shock = Front(3, FrontKind.SHOCK, 1e-3, 1e-7, speed=5200.0)
+    neglect.follow(engine, hot, cold, mo, [lead, tail], [shock])
+    budget = engine.neglect_budget
+    rate = mo.rho0 * 200.0 * 4500.0
+    assert budget.moving == [(tail, pytest.approx(rate, rel=1e-12))]
+    assert neglect.moved_so_far(budget, 3e-7) == pytest.approx(rate * 2e-7, rel=1e-12)
+    tail.alive, tail.t1 = False, 2e-7   # met another wave at 0.2 us
+    assert neglect.moved_so_far(budget, 5e-7) == pytest.approx(rate * 1e-7, rel=1e-12)
+    assert budget.moving == []
+    # the hotter (left) side's family dropped: the right side's wave borders the
+    # hotter region left of the event and makes energy at the same rate
+    neglect.follow(engine, hot, cold, mo, [], [shock])
+    assert budget.moving == [(shock, pytest.approx(mo.rho0 * 200.0 * 5200.0, rel=1e-12))]
