@@ -61,13 +61,13 @@ class ReleasePath:
         self.table = self._curve.release_table()
 
     def holds(self, state: State) -> bool:
-        """Whether ``state`` lies on this path (``PATH_MATCH``) within its table."""
+        """Whether ``state``'s stress and volume lie on this path (``PATH_MATCH``) within
+        its table (its deviator is the caller's to check)."""
         v = float(state.v)
         if not self.table.start <= v <= self.table.end:
             return False
         sigma, slope = self.table.stress(v)
-        return (abs(sigma - state.sigma) <= -PATH_MATCH * v * slope
-                and self.material.on_reverse_yield(state))
+        return abs(sigma - state.sigma) <= -PATH_MATCH * v * slope
 
     def integral(self, v: float) -> float:
         """``J(v) = int rho0 C dv`` from the path's start (m/s)."""
@@ -159,7 +159,8 @@ class ReleasePaths:
         """The Riemann solution of ``left`` against ``right`` (one material) when both
         outgoing waves are releases along one plastic path (module notes), else ``None``."""
         if release != "isentrope" or not isinstance(material, FinitePlastic) \
-                or material.hardening != 0.0:
+                or material.hardening != 0.0 or not math.isfinite(left.v + right.v) \
+                or not (material.on_reverse_yield(left) and material.on_reverse_yield(right)):
             return None
         try:
             path = self._path(material, left, right)
@@ -169,15 +170,13 @@ class ReleasePaths:
 
     def _path(self, material, left: State, right: State) -> ReleasePath | None:
         """A kept path holding both states (moved to the front), or a new one from the
-        denser of them; ``None`` when they lie on no common path."""
+        denser of them; ``None`` when they lie on no common path.  Both states lie on the
+        reverse-yield surface."""
         for k, path in enumerate(self._paths):
             if path.material is material and path.holds(left) and path.holds(right):
                 self._paths.insert(0, self._paths.pop(k))
                 return path
-        first = left if left.v <= right.v else right
-        if not (math.isfinite(first.v) and material.on_reverse_yield(first)):
-            return None
-        path = ReleasePath(material, first)
+        path = ReleasePath(material, left if left.v <= right.v else right)
         self._paths.insert(0, path)
         del self._paths[KEPT_PATHS:]
         return path if path.holds(left) and path.holds(right) else None
