@@ -107,7 +107,9 @@ speed's interpolant.  The volume of a target stress is found by Newton's method 
 table (from the tangent at the branch's start, so the root depends on the target
 alone); the state behind is then the closed form at that volume.  The tables agree
 with the closed forms and with adaptive quadrature to rounding
-(``tests/test_path_table.py``, 1e-12 over random states).
+(``tests/test_path_table.py``, 1e-12 over random states).  Two rays crossing on one
+plastic release path need no wave curve at all: ``materials.release_crossing`` solves
+them in closed form on that path's table, kept for the run.
 """
 
 from __future__ import annotations
