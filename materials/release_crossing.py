@@ -98,7 +98,14 @@ class ReleasePath:
 
     def _root(self, residual, start: float, noise: float) -> float | None:
         """Root of a monotone ``residual`` on the path beyond ``start`` (the tangent from
-        ``start`` brackets it: ``J`` is concave and ``sigma`` convex along the path)."""
+        ``start`` brackets it: ``J`` is concave and ``sigma`` convex along the path).
+        A target not beyond ``start`` is ``start`` itself: a state's stress lies within
+        ``PATH_MATCH`` of the path's, and a fan's inner stress within rounding of its
+        ahead state's (seed 24 of ``benchmarks/pile_up.py``: 1.31339e10 Pa on both) may
+        fall on either side."""
+        value, slope = residual(start)
+        if value * slope >= 0.0:
+            return start
         local = bracket_near(residual, start, lower=start, upper=self.table.end, f_tol=noise)
         if local is None:
             return None

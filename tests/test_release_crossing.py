@@ -17,7 +17,7 @@ import pytest
 import fronttrack as ft
 import materials.release_crossing as release_crossing
 from materials import LEFT, RIGHT, FinitePlastic, FinitePlasticWaveCurve, State, solve_contact
-from materials.release_crossing import ReleasePaths
+from materials.release_crossing import ReleaseFanCurve, ReleasePath, ReleasePaths
 
 A = FinitePlastic("A", 5808.0, 4000.0, 1.4, 1.6, 60e9, 1.88e9)
 B = FinitePlastic("B", 18123.0, 3000.0, 1.3, 2.0, 80e9, 1.22e9)
@@ -93,6 +93,20 @@ def test_crossings_off_one_release_path_go_to_the_riemann_solver():
     elastic = _released(12e9, 11e9)
     assert not A.on_reverse_yield(elastic)
     assert paths.crossing(A, *_pair(elastic, 30e6, 30e6)) is None
+
+
+def test_a_fan_within_rounding_of_its_ahead_state_starts_there():
+    """Seed 24 of ``benchmarks/pile_up.py`` stopped on NoSolutionError: a fan from
+    1.31339e10 Pa whose inner stress lay within rounding of it, above the path's stress
+    at the ahead volume (a state lies on a path to ``PATH_MATCH``, 0.14 Pa here)."""
+    middle = _released(12e9, 3e9)
+    path = ReleasePath(A, middle)
+    ahead = State(middle.sigma + 0.01, middle.u, middle.v, middle.e, middle.plastic_strain)
+    assert path.holds(ahead)
+    for direction in (LEFT, RIGHT):
+        state = ReleaseFanCurve(path, ahead, direction).state_at(ahead.sigma - 0.005)
+        assert state.v == ahead.v and state.u == ahead.u
+        assert state.sigma == ahead.sigma - 0.005
 
 
 def test_a_ringing_flyer_records_the_riemann_solver_s_solution(monkeypatch):
