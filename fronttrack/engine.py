@@ -30,6 +30,7 @@ import time
 
 from characteristics.isentrope import IsentropeTables
 from materials import State, WavediagramError
+from materials.release_crossing import ReleasePaths
 
 from . import (
     archive,
@@ -104,6 +105,7 @@ class Engine:
                                for k, layer in enumerate(scene.layers)]
         self.resolution: Resolution = resolve(scene, self.initial_states)
         self.tables = IsentropeTables(self.resolution.negligible)
+        self.release_paths = ReleasePaths()  # plastic release paths met (interactions)
         self.signal_speed = signal_speed(scene, self.resolution.stress_scale)
         self.head: Front | None = None
         self.coalesce_budget: tuple[float, float] | None = None  # fronttrack.coalesce

@@ -12,7 +12,9 @@ it with ``materials.solve_contact`` or ``materials.solve_boundary``:
 - at an open gap: each face reflects as a free surface; the gap closes (a new
   impact) when the Eulerian positions of its two faces meet;
 - inside a material (collisions and overtakings involving a shock, rays of
-  different isentropes): ``solve_contact`` with the material's spall strength; a
+  different isentropes): ``solve_contact`` with the material's spall strength (rays
+  crossing on one plastic release path of a finite-plastic solid: the closed form of
+  ``materials.release_crossing``, the same solution); a
   tension beyond it fractures the material there, unless the point lies inside the
   zone of an earlier fracture (``fronttrack.spall``).
 
@@ -80,8 +82,14 @@ def solve(engine, site, region_left, region_right, t, x, incoming, timer):
                                release=release)
         return EventKind.REFLECTION, combine(left, right), None
     strength = contact_strength(engine, site, region_left.material)
-    sol = solve_contact(region_left.material, region_left.state, region_right.material,
-                        region_right.state, strength, release)
+    sol = None
+    if site is None and region_left.material is region_right.material:
+        # rays crossing on one plastic release path: its closed form
+        sol = engine.release_paths.crossing(region_left.material, region_left.state,
+                                            region_right.state, strength, release)
+    if sol is None:
+        sol = solve_contact(region_left.material, region_left.state, region_right.material,
+                            region_right.state, strength, release)
     if site is None:
         directions = {f.direction for f in incoming}
         kind = EventKind.COLLISION if directions == {-1, 1} else EventKind.OVERTAKE

@@ -107,7 +107,9 @@ speed's interpolant.  The volume of a target stress is found by Newton's method 
 table (from the tangent at the branch's start, so the root depends on the target
 alone); the state behind is then the closed form at that volume.  The tables agree
 with the closed forms and with adaptive quadrature to rounding
-(``tests/test_path_table.py``, 1e-12 over random states).
+(``tests/test_path_table.py``, 1e-12 over random states).  Two rays crossing on one
+plastic release path need no wave curve at all: ``materials.release_crossing`` solves
+them in closed form on that path's table, kept for the run.
 """
 
 from __future__ import annotations
@@ -276,6 +278,20 @@ class FinitePlastic(Material):
     def accumulated_plastic_strain(self, state: State) -> float:
         """``eps_bar`` (``HardenedState``), else ``|plastic_strain|``."""
         return float(getattr(state, "equivalent_plastic_strain", abs(state.plastic_strain)))
+
+    def yield_tolerance(self, deviator: float, radius: float) -> float:
+        """Distance (Pa) within which a deviator lies on a yield surface of radius
+        ``radius`` (``_SNAP`` of their scale): rounding, not an elastic range."""
+        return _SNAP * (radius + abs(deviator)) + 1e-15 * self.shear_modulus
+
+    def on_reverse_yield(self, state: State) -> bool:
+        """Whether ``state`` lies on the reverse-yield surface ``S = -(2/3) Y`` (to
+        ``yield_tolerance``): released plastically, it releases further along the
+        plastic path at once."""
+        radius = 2.0 * self.flow_stress(self.accumulated_plastic_strain(state)) / 3.0
+        deviator = self.deviator(state)
+        return math.isfinite(radius) and (
+            radius + deviator <= self.yield_tolerance(deviator, radius))
 
     def flow_stress(self, accumulated: float) -> float:
         """Current yield stress ``Y = Y0 + H eps_bar`` (Pa)."""
@@ -533,7 +549,7 @@ class FinitePlasticWaveCurve(StressRange):
         self._ends: dict[tuple, tuple[tuple[float, float], float]] = {}
         g, r = mat.shear_modulus, self._radius
         if math.isfinite(r):
-            tol = _SNAP * (r + abs(self._s_a)) + 1e-15 * g
+            tol = mat.yield_tolerance(self._s_a, r)
             up, down = r - self._s_a, r + self._s_a
             up = 0.0 if up <= tol else up
             down = 0.0 if down <= tol else down
@@ -792,6 +808,24 @@ class FinitePlasticWaveCurve(StressRange):
         if self._knee_up is None or v >= self._v_high:
             return self._integral("elastic", v)
         return self._integral("elastic", self._v_high) + self._integral("plastic-up", v)
+
+    # --- the plastic release path from a state on the reverse-yield surface ---------------
+    @property
+    def on_reverse_yield(self) -> bool:
+        """Whether the ahead state lies on the reverse-yield surface (to ``_SNAP``), so
+        that its release is plastic from the start: no elastic fan."""
+        return self._knee_down is self._start and self.release != "hugoniot"
+
+    def release_table(self) -> PathTable:
+        """The table of the plastic release path from the reverse-yield point towards
+        larger volumes (its ``start`` the point's volume; ``materials.release_crossing``)."""
+        return self._table("plastic-down", expanding=True)
+
+    def release_state(self, v: float, sigma: float, u: float) -> State:
+        """The state at volume ``v`` (m^3/kg) on the plastic release path (closed form),
+        carrying the stress ``sigma`` (Pa, the path's to rounding) and velocity ``u`` (m/s)."""
+        point = self._plastic_path(self._knee_down, -1, v)
+        return dataclasses.replace(point, sigma=float(sigma)).state(u, self.material)
 
     # --- range ---------------------------------------------------------------------------
     def sigma_limits(self) -> tuple[float, float]:
