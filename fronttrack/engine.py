@@ -457,6 +457,9 @@ class Engine:
                     left_star, right_star, material_left)
         left_specs = left_specs or []
         right_specs = right_specs or []
+        dropped.attach(self, {} if middle is not None else {
+            -1: right_specs[-1].front if right_specs else None,
+            +1: left_specs[-1].front if left_specs else None})
         # Fronts left to right, each with the state (and its table) on its right.
         items, right_of, tables = [], [], []
         for k, spec in enumerate(left_specs):
@@ -556,6 +559,7 @@ class Engine:
         for front in group:
             if front is middle:
                 continue
+            dropped.settle(self, front, t)
             front.alive = False
             front.t1, front.x1 = t, x
             front.right_region_id = front.region_right.id if front.region_right else None
