@@ -450,9 +450,6 @@ class Engine:
         if middle is None and left_star is not None and right_star is not None:
             middle = self._entropy_contact(left_star, right_star, material_left, t, x, group)
             if middle is None:
-                neglect.follow(self, left_star, right_star, material_left,
-                               [s.front for s in left_specs or ()],
-                               [s.front for s in right_specs or ()])
                 left_star = right_star = self._neglected_contact_state(
                     left_star, right_star, material_left)
         left_specs = left_specs or []

@@ -33,24 +33,15 @@ bound holds whichever way the energy moves: a hotter region that continues throu
 the event, or the mean of two merged regions, makes energy; the lower-energy state
 taken behind a wave that runs on loses it (campaign seeds 28 and 597 lost 0.40 % and
 1.1 % of their energy that way, against a promise of 0.2 %, before losses were
-budgeted too).  The costs of many neglects, each within the budget, still add up
-(campaign seed 355 lost 0.57 %, seed 89 0.205 %, with every contact within a quarter of
-the 0.2 % promise).  The bounds themselves cannot be held to one budget for their sum:
-they are ten times what the neglects lose (355: 0.66 % of the content against a loss
-of 0.23 %; 89: 1.9 % against 0.20 %), and a sum of bounds, tried, kept so many contacts
+budgeted too).  Each contact is judged on its own, never against what earlier ones
+spent: a symmetric scene solves the mirror images of an event one after the other,
+and must treat them alike.  So the costs of many neglects may add up past the budget
+(campaign seed 355 loses 0.50 % with each of its contacts within a quarter of the 0.2 %
+promise); a budget for their sum, tried, brought it to 0.28 % but kept so many contacts
 that the symmetric Al 2024 impact at 16 rays to 2.25 us took more than 97 s of CPU
-instead of 5.5 s.  What a neglect moves is known as it happens: the colder state is
-taken behind the innermost wave on the hotter side, which loses energy at the rate
-``rho0 |U| |e_L - e_R|`` above for as long as it runs (``follow``; where the hotter
-side's family was dropped, the colder side's wave borders the hotter region and makes
-energy at that rate).  So a contact is also tracked while what the neglects so far
-have moved (``moved_so_far``) and the bound of this one exceed ``TOTAL`` of the
-promised balance times the content.  That sum grows continuously in time: the mirror
-images of an event, solved one after the other at one time, see the same sum and are
-treated alike.  The content is measured when a cost exceeds the budget known (it never
-shrinks), at most once per ``REFRESH`` of the run's duration; the bounds of the
-contacts neglected are summed in ``accuracy.neglected_contact_cost`` and what they
-moved in ``accuracy.neglected_contact_moved``.
+instead of 5.5 s.  The content is measured when a cost exceeds the budget
+known (it never shrinks), at most once per ``REFRESH`` of the run's duration; the
+costs of the contacts neglected are summed in ``accuracy.neglected_contact_cost``.
 
 A contact whose yield stresses differ by more than the negligible stress though it
 reflects less (a plastic-strain contact of a finite-plastic solid reflects a fraction
@@ -64,16 +55,12 @@ them was before the bound.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 from . import balance
 
 BUDGET = 0.25
 """Fraction of the promised energy balance one neglected entropy contact may cost."""
-
-TOTAL = 0.5
-"""Fraction of the promised energy balance all neglected entropy contacts together may
-have moved so far (``moved_so_far``) with the cost of the next one."""
 
 REFRESH = 0.01
 """The energy content behind the budget is measured again at most once per this
@@ -104,74 +91,29 @@ def _to_site(front, step: str, x: float, t: float, limit: float) -> float:
 @dataclass
 class NeglectBudget:
     """The energy (J/m^2) one neglected contact may cost (``limit``) and when the
-    content behind it may next be measured again (``refresh``, s); the waves that run
-    beside a state their neglected contact changed, each with the rate (W/m^2) at which
-    it moves energy (``moving``), and what the ones that ended moved (``moved``, J/m^2)."""
+    content behind it may next be measured again (``refresh``, s)."""
 
     limit: float = 0.0
     refresh: float = 0.0
-    moving: list = field(default_factory=list)
-    moved: float = 0.0
-
-
-def follow(engine, left, right, material, left_fronts, right_fronts) -> None:
-    """Follow the wave that runs beside the wrong state after a neglected contact between
-    star states ``left`` and ``right`` (``left_fronts``/``right_fronts``: the fronts of
-    the families leaving the event, innermost last).  The innermost wave on the hotter
-    side runs with a colder state behind it than its jump wants (the star of lower
-    specific energy taken for both, ``Engine._neglected_contact_state``, or the colder
-    side's own region where that family was dropped, which then borders the wave) and
-    loses energy; where the hotter side's family was dropped, the innermost wave on the
-    colder side borders the hotter region and makes it.  Either moves ``rho0 |U| |e_L -
-    e_R|`` (W/m^2) for as long as it runs."""
-    hot, cold = (left_fronts, right_fronts) if left.e > right.e else (right_fronts, left_fronts)
-    wave = hot[-1] if hot else cold[-1] if cold else None
-    rate = material.rho0 * abs(left.e - right.e) * abs(wave.speed) if wave is not None else 0.0
-    if rate > 0.0:
-        engine.neglect_budget.moving.append((wave, rate))
-
-
-def moved_so_far(budget: NeglectBudget, t: float) -> float:
-    """The energy (J/m^2) the waves followed (``follow``) have moved by time ``t`` (s):
-    each its rate over its life until ``t`` or its end.  Continuous in ``t``: a symmetric
-    scene's mirror-image events, solved one after the other at one time, see one sum."""
-    live, running = [], 0.0
-    for wave, rate in budget.moving:
-        if wave.alive:
-            live.append((wave, rate))
-            running += rate * max(t - wave.t0, 0.0)
-        else:
-            budget.moved += rate * max(wave.t1 - wave.t0, 0.0)
-    budget.moving = live
-    return budget.moved + running
 
 
 def affordable(engine, cost: float, t: float, history: bool = False) -> bool:
     """Whether a neglect costing ``cost`` (J/m^2) at time ``t`` (s) is within the
-    budget, and with what the neglects so far have moved (``moved_so_far``, J/m^2) within
-    ``TOTAL / BUDGET`` of it; if so it is counted (``Counters.neglect_cost``).  A
-    contact that carries plastic ``history`` (its yield offset above the negligible
-    stress, though what it reflects is below it: ``Material.contact_reflection``) is
-    also held, with all such contacts neglected before it, to one budget for their sum
-    (``Counters.history_cost``)."""
+    budget; if so it is counted (``Counters.neglect_cost``).  A contact that carries
+    plastic ``history`` (its yield offset above the negligible stress, though what it
+    reflects is below it: ``Material.contact_reflection``) is also held, with all such
+    contacts neglected before it, to one budget for their sum (``Counters.history_cost``)."""
     counters = engine.counters
     spent = cost + (counters.history_cost if history else 0.0)
     budget = engine.neglect_budget
-    total = moved_so_far(budget, t) + cost
-    if _beyond(budget, spent, total) and t >= budget.refresh:
+    if spent > budget.limit and t >= budget.refresh:
         content = balance.live_content(engine, t)[1]
         promise = balance.promised_balance(engine.resolution.report())
         budget.limit = max(budget.limit, BUDGET * promise * content)
         budget.refresh = t + REFRESH * engine.t_end
-    if _beyond(budget, spent, total):
+    if spent > budget.limit:
         return False
     counters.neglect_cost += cost
     if history:
         counters.history_cost += cost
     return True
-
-
-def _beyond(budget: NeglectBudget, spent: float, total: float) -> bool:
-    """Whether a neglect's cost ``spent`` (J/m^2) exceeds the budget's ``limit`` or the
-    neglects' ``total`` (what they moved, with it) exceeds ``TOTAL / BUDGET`` of it."""
-    return spent > budget.limit or BUDGET * total > TOTAL * budget.limit

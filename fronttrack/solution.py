@@ -32,7 +32,7 @@ import numpy as np
 from characteristics.reconstruct import Cell, Crossing, knots
 from materials import State
 
-from . import dropped, neglect, ring_records
+from . import dropped, ring_records
 from .archive import FrontTable, RegionTable, compact
 from .errors import SceneError
 from .event_log import EventRecord
@@ -236,7 +236,6 @@ class Solution:
             "neglected_contact_energy": counters.neglected_contact_energy,
             "neglected_contact_cost": counters.neglect_cost,
             "neglected_history_cost": counters.history_cost,
-            "neglected_contact_moved": neglect.moved_so_far(engine.neglect_budget, engine.t_end),
             "dropped_wave_cost": dropped.cost(engine),
             "cavitations": counters.cavitations,
             "release_floors": {name: {"stress": stress, "faces": count}
