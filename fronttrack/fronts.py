@@ -81,10 +81,10 @@ class Front:
     NaN for a ray without an isentrope table).  For sites: ``bond``, ``strength``
     (tension it carries, Pa), ``side`` of a boundary, and the gap's ``gap_width``
     (Eulerian, m) at ``gap_time``; a piston boundary that separated from its face keeps
-    its ``piston_velocity`` (m/s, ``None`` while in contact) and the gap the same way;
-    a stress boundary whose tension tore the material off its face is ``torn``.
+    its ``piston_velocity`` (m/s, ``None`` while in contact) and the gap the same way.
     ``history`` records ``(t, kind)`` changes of a site's
-    kind; ``boundary_steps`` the ``(t, value)`` steps of a prescribed history;
+    kind (a stress boundary whose tension tore the material off its face: ``GAP`` from
+    then on); ``boundary_steps`` the ``(t, value)`` steps of a prescribed history;
     ``earlier_regions`` records ``(t, region_id)``: the region on the right until ``t``.
     ``solved_until`` (s): a site that ends or lies inside a lattice, the time up to which
     that lattice solved the cells beside it, ahead of the queue (``fronttrack.zones``).
@@ -121,7 +121,6 @@ class Front:
     gap_time: float = 0.0
     gap_version: int = 0
     piston_velocity: float | None = None
-    torn: bool = False
     history: list = field(default_factory=list)
     boundary_steps: list = field(default_factory=list)
     earlier_regions: list = field(default_factory=list)

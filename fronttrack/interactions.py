@@ -179,7 +179,8 @@ def _traction(engine, site, region, stress: float, t: float, kind):
     takes compression, which presses the torn skin back onto it, but no tension.
     """
     release = engine.resolution.release
-    if site.torn:
+    torn = any(kind == FrontKind.GAP for _, kind in site.history)  # apart from its load
+    if torn:
         stress = max(stress, 0.0)
     strength = contact_strength(engine, None, region.material)
     if stress >= -strength:
@@ -191,9 +192,8 @@ def _traction(engine, site, region, stress: float, t: float, kind):
                 raise
         engine.counters.cavitations += 1  # beyond the equation of state: cavitation
         strength = _most_tension(region, site.side, release)
-    if not site.torn:
-        site.torn = True
-        site.history.append((t, FrontKind.GAP))  # apart from its load from now on
+    if not torn:
+        site.history.append((t, FrontKind.GAP))
     spall.record(engine, site.x0, t, -stress, strength, region.layer)
     return EventKind.SPALL, solve_boundary(region.material, region.state, site.side,
                                            stress=0.0, release=release)

@@ -835,12 +835,12 @@ def _held(boundary, t: float, state: State, apart=()) -> State:
     stress only to rounding).  While a piston is ``apart`` from its face (``(t_open,
     t_close)`` intervals, s), the face is free; a face a stress tore off its load
     (``fronttrack.interactions._traction``) takes compression only."""
-    torn = any(a <= t < b for a, b in apart)
+    separated = any(a <= t < b for a, b in apart)
     if boundary.kind in ("free", "stress"):
         value = boundary.value_at(t)
-        value = max(value, 0.0) if torn else value
+        value = max(value, 0.0) if separated else value
         return state if state.sigma == value else dataclasses.replace(state, sigma=value)
-    if torn:
+    if separated:
         return state if state.sigma == 0.0 else dataclasses.replace(state, sigma=0.0)
     value = boundary.value_at(t)
     return state if state.u == value else dataclasses.replace(state, u=value)
