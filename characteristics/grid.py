@@ -19,6 +19,14 @@ one the grid holds is therefore taken as that value: the wave so dropped carries
 stress below half the negligible stress (a simple wave of stress ``d sigma`` moves its
 invariant by ``2 d sigma / (rho0 C_L)``), the amplitude the engine's Riemann solves
 drop too.
+
+A zone between two joins (a fan ringing in a layer bonded to other materials on both
+sides: a Cu/Al/Cu/Al stack) reflects at each end with a coefficient of a few tenths,
+and each round adds as many values as arrive: 123 rays between two Cu plates made
+500 x 500 grids and more, and each event tried one and gave up, so the fan's crossings
+went to the Riemann solver one by one (2 351 in 10 ns).  A lattice visits a few states
+of each row, so a grid beyond ``MAX_GRID_STATES`` is evaluated where it is read
+(``_SparseStates``): a row at a time, by the same call to the isentrope table.
 """
 
 from __future__ import annotations
@@ -38,12 +46,17 @@ reflecting ends needs more; the lattice stops where the grid runs out)."""
 
 
 MAX_GRID_STATES = 200_000
-"""Largest grid a lattice tabulates; a zone that would need more (many rays with many
-reflections of reflections) is left to the queue's Riemann solves."""
+"""Largest grid a lattice tabulates at once; a larger one is evaluated state by state
+where the lattice reads it (``_SparseStates``)."""
+
+MAX_GRID_VALUES = 20_000
+"""Most invariant values (``J+`` and ``J-`` together) a grid holds; a zone that would
+need more (many rays with many reflections of reflections) is left to the queue's
+Riemann solves."""
 
 
 class GridTooLarge(Exception):
-    """The zone's grid of states would exceed ``MAX_GRID_STATES``."""
+    """The zone's grid would hold more than ``MAX_GRID_VALUES`` invariant values."""
 
 
 class Grid:
@@ -87,16 +100,22 @@ class Grid:
                 if new.size:
                     p_values, grown = np.union1d(p_values, new), True
             # the sets only grow: a grid too large now stays too large
-            if p_values.size * m_values.size > MAX_GRID_STATES:
+            if p_values.size + m_values.size > MAX_GRID_VALUES:
                 raise GridTooLarge(f"{p_values.size} x {m_values.size} states")
             if not grown:
                 break
         self.p, self.m = p_values, m_values
-        phi = 0.5 * (p_values[:, None] - m_values[None, :])
-        sigma, v, e, c = self.table.arrays_at_phi(phi.ravel())
-        self.sigma, self.v, self.e, self.c = (a.reshape(phi.shape) for a in (sigma, v, e, c))
-        self.u = 0.5 * (p_values[:, None] + m_values[None, :])
-        self.rows = {name: getattr(self, name).tolist() for name in ("sigma", "u", "c")}
+        if p_values.size * m_values.size <= MAX_GRID_STATES:
+            phi = 0.5 * (p_values[:, None] - m_values[None, :])
+            sigma, v, e, c = self.table.arrays_at_phi(phi.ravel())
+            self.sigma, self.v, self.e = (a.reshape(phi.shape) for a in (sigma, v, e))
+            self.u = 0.5 * (p_values[:, None] + m_values[None, :])
+            self.rows = {"sigma": self.sigma.tolist(), "u": self.u.tolist(),
+                         "c": c.reshape(phi.shape).tolist()}
+        else:
+            states = _SparseStates(self.table, p_values, m_values)
+            self.sigma, self.v, self.e, self.u = (states.column(k) for k in range(4))
+            self.rows = {"sigma": states.rows(0), "u": states.rows(3), "c": states.rows(4)}
         self.p_list, self.m_list = p_values.tolist(), m_values.tolist()
         self.maps, self.emitted = {}, {}
         for to, conditions, source, target in ((-1, self.to_minus, p_values, m_values),
@@ -131,6 +150,61 @@ class Grid:
 
     def m_index(self, values):
         return np.searchsorted(self.m, values)
+
+
+class _SparseStates:
+    """The states of a grid ``P x M`` evaluated a row at a time where they are read, and
+    kept: row ``i`` holds ``(sigma, v, e, u, C_L)`` lists over ``j``, at ``phi = (P_i -
+    M_j) / 2`` and ``u = (P_i + M_j) / 2`` (Pa, m^3/kg, J/kg, m/s, m/s), from the
+    isentrope table's vectorised call, as a dense grid evaluates them.  Its
+    stress-function range is checked up front (the corners ``P_max - M_min`` and
+    ``P_min - M_max``), so that a grid reaching past the table is refused as a dense one
+    is (``StateOutOfRangeError``)."""
+
+    def __init__(self, table: Isentrope, p: np.ndarray, m: np.ndarray):
+        self.table, self.p, self.m = table, p, m
+        table.arrays_at_phi(0.5 * np.array([p[-1] - m[0], p[0] - m[-1]]))
+        self.known: dict = {}
+
+    def row(self, i: int) -> tuple:
+        """Row ``i``: the lists ``(sigma, v, e, u, C_L)`` over the ``J-`` values."""
+        found = self.known.get(i)
+        if found is None:
+            p = self.p[i]
+            sigma, v, e, c = self.table.arrays_at_phi(0.5 * (p - self.m))
+            found = self.known[i] = tuple(a.tolist() for a in (sigma, v, e, 0.5 * (p + self.m),
+                                                                c))
+        return found
+
+    def rows(self, k: int) -> _SparseRows:
+        """Quantity ``k`` of the states, read as ``rows[i][j]``."""
+        return _SparseRows(self, k)
+
+    def column(self, k: int) -> _SparseColumn:
+        """Quantity ``k`` of the states, read as ``column[P, M]`` (index arrays)."""
+        return _SparseColumn(self, k)
+
+
+class _SparseRows:
+    """``rows[i][j]``: quantity ``k`` of state ``(i, j)`` of a ``_SparseStates``."""
+
+    def __init__(self, states: _SparseStates, k: int):
+        self.states, self.k = states, k
+
+    def __getitem__(self, i: int) -> list:
+        return self.states.row(i)[self.k]
+
+
+class _SparseColumn:
+    """``column[P, M]``: quantity ``k`` of the states ``(P[n], M[n])`` as an array."""
+
+    def __init__(self, states: _SparseStates, k: int):
+        self.states, self.k = states, k
+
+    def __getitem__(self, index: tuple) -> np.ndarray:
+        row, k = self.states.row, self.k
+        return np.array([row(int(i))[k][int(j)] for i, j in zip(*index, strict=True)],
+                        dtype=float)
 
 
 CONTACT_NEWTON_STEPS = 12
