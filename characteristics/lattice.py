@@ -139,13 +139,6 @@ class Zone:
     the input cells carry (``None``: those of the isentrope); a cell behind a ray may lie
     off the isentrope by the energy the ray's jump conditions took
     (``characteristics.ray_energy``), which it keeps while the lattice does not replace it.
-    ``columns``: per interval between sites (``len(sites) + 1``, left to right), the
-    isentrope table the interval's input cells share where it is not ``table`` (else
-    ``None``).  A contact inside a zone joins two isentropes within the tables' tolerance
-    in stress, which may be far apart in energy (water at 70 MPa: 99 kPa at equal volume
-    is 280 J/kg, a third of its energy); the cells the lattice makes in an interval take
-    the volume and energy of its own isentrope at their stress, so that a ray passing the
-    contact does not carry one side's entropy into the other's mass.
     """
 
     table: Isentrope
@@ -167,7 +160,6 @@ class Zone:
     max_nodes: int = 10**9
     negligible: float = 0.0
     e: np.ndarray | None = None
-    columns: tuple = ()
 
 
 @dataclass
@@ -776,11 +768,9 @@ class _March:
 
     def _volume_energy(self, p_all: np.ndarray, m_all: np.ndarray):
         """Specific volumes (m^3/kg) and internal energies (J/kg) of the cells: the
-        isentrope's, or at their stress that of their interval's (``Zone.columns``),
-        except for an input cell that carries another energy (``Zone.e``), which keeps it,
-        at the volume that keeps its stress."""
+        isentrope's, except for an input cell that carries another energy (``Zone.e``),
+        which keeps it, at the volume that keeps its stress."""
         v, e = self.grid.v[p_all, m_all], self.grid.e[p_all, m_all]
-        self._on_columns(self.grid.sigma[p_all, m_all], v, e)
         if self.zone.e is None:
             return v, e
         given = self.zone.e
@@ -790,21 +780,6 @@ class _March:
             if found is not None:  # else the isentrope's state (as before)
                 v[k], e[k] = found, given[k]
         return v, e
-
-    def _on_columns(self, sigma: np.ndarray, v: np.ndarray, e: np.ndarray) -> None:
-        """Set ``v`` and ``e`` of the cells in an interval with its own isentrope
-        (``Zone.columns``) to that isentrope's at their stress ``sigma`` (Pa), where it
-        reaches that stress (else they keep the zone's)."""
-        sites = np.array(self.cell_sites, dtype=int)
-        for k, column in enumerate(self.zone.columns):
-            cells = np.flatnonzero(sites == k) if column is not None else ()
-            if not len(cells):
-                continue
-            try:
-                phi, _ = column.arrays_at_stress(sigma[cells])
-                _, v[cells], e[cells], _ = column.arrays_at_phi(phi)
-            except StateOutOfRangeError:
-                continue
 
     def _emitted(self) -> dict:
         """The rays each join sent into its far side, as arrays (each at the characteristic

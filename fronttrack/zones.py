@@ -84,7 +84,7 @@ def try_zone(engine, group: list[Front], t: float) -> bool:
         spall.schedule(engine, lattice, _layer_at(run, lattice.fracture.x), t)
         _requeue(engine, run, t)
         return True
-    _splice(engine, run, lattice, t, zone.columns)
+    _splice(engine, run, lattice, t)
     if lattice.fracture is not None:
         spall.schedule(engine, lattice, _layer_at(run, lattice.fracture.x), t)
     return True
@@ -240,27 +240,7 @@ def _zone(engine, run: _Run, t: float) -> moc.Zone:
         carried=tuple(carried), sites=tuple(sites),
         max_nodes=NODES_PER_EVENT * max(engine.acc.max_events - engine.counters.events, 1),
         negligible=engine.resolution.negligible,
-        e=np.array([c.state.e for c in run.cells]), columns=_columns(engine, run))
-
-
-def _columns(engine, run: _Run) -> tuple:
-    """Per interval between the run's sites, the isentrope table its cells share where
-    that is not the run's (``None`` where it is, or where they do not share one):
-    ``characteristics.lattice.Zone.columns``.  None in a run with a gap: no ray crosses
-    a gap, and there the cells a lattice makes stay on the run's table (taking each
-    fragment's table split the demo's lattices: 485 -> 806 events)."""
-    count = 1 + sum(1 for f in run.slots if f.is_site)
-    if any(f.kind == FrontKind.GAP for f in run.slots):
-        return (None,) * count
-    tables, columns = {}, []
-    for k, cell in enumerate(run.cells):
-        table = engine.table_of(cell)
-        tables[id(table)] = table
-        if k == len(run.slots) or run.slots[k].is_site:
-            shared = next(iter(tables.values())) if len(tables) == 1 else None
-            columns.append(None if shared is run.table else shared)
-            tables = {}
-    return tuple(columns)
+        e=np.array([c.state.e for c in run.cells]))
 
 
 def _own_invariant(engine, run: _Run, i: int, invariants: list) -> float:
@@ -382,9 +362,8 @@ def _requeue(engine, run: _Run, t: float) -> None:
         engine.push_pair(a, b, t)
 
 
-def _splice(engine, run: _Run, lat: moc.Lattice, t: float, columns: tuple) -> None:
-    """Write the solved lattice back into the engine (see the module docstring);
-    ``columns``: the zone's (``_columns``)."""
+def _splice(engine, run: _Run, lat: moc.Lattice, t: float) -> None:
+    """Write the solved lattice back into the engine (see the module docstring)."""
     k = len(run.slots)
     n_seg, n_cell = len(lat.seg_x0), len(lat.cell_sigma)
     live_seg, live_cell = lat.live_segments, lat.live_cells
@@ -411,13 +390,10 @@ def _splice(engine, run: _Run, lat: moc.Lattice, t: float, columns: tuple) -> No
             run.cells[j].t_end = float(lat.cell_t1[j])
     for j in np.nonzero(is_live_cell[k + 1:])[0] + k + 1:
         j = int(j)
-        column = columns[lat.cell_sites[j]]  # the cell lies on its interval's isentrope
         region = Region(id=int(cell_ids[j]), state=_state(lat, j), material=material,
                         layer=int(layer_of[j]), t_start=float(lat.cell_t0[j]),
-                        left_points=[], right_points=[], in_fan=True,
-                        table=run.table if column is None else column,
-                        invariants=((float(lat.cell_jp[j]), float(lat.cell_jm[j]))
-                                    if column is None else None))
+                        left_points=[], right_points=[], in_fan=True, table=run.table,
+                        invariants=(float(lat.cell_jp[j]), float(lat.cell_jm[j])))
         _extend_chains(region, chain_side, chain_x, chain_t, bounds[j], bounds[j + 1])
         engine.regions.append(region)
         regions[j] = region
@@ -442,7 +418,7 @@ def _splice(engine, run: _Run, lat: moc.Lattice, t: float, columns: tuple) -> No
             speed=float(lat.seg_speed[s]), direction=int(lat.seg_family[s]),
             jump=_jump(lat, left_cell, right_cell, int(lat.seg_family[s])),
             fan=int(fans[s]), ray_index=source.ray_index, ray_count=source.ray_count,
-            invariant=_gauged(lat, s, columns), lineage=origin)
+            invariant=float(lat.seg_own[s]), lineage=origin)
         front.left_region = int(cell_ids[left_cell])
         live_fronts.append(front)
     # --- the regions right of each front, and the sites' earlier ones
@@ -481,20 +457,6 @@ def _splice(engine, run: _Run, lat: moc.Lattice, t: float, columns: tuple) -> No
                   if f.kind == FrontKind.RAY and not math.isnan(lat.seg_t1[i])],
         outgoing=[f.id for f in live_fronts if f not in run.slots], site=None,
         nodes=lat.nodes))
-
-
-def _gauged(lat, s: int, columns: tuple) -> float:
-    """The invariant (m/s) of the lattice's segment ``s`` in the gauge of the table of the
-    cells beside it: the run's, or their interval's own (``_columns``), whose ``phi`` is
-    measured from another labelling state (``_own_invariant``)."""
-    cell, family = int(lat.seg_left[s]), int(lat.seg_family[s])
-    column = columns[lat.cell_sites[cell]]
-    if column is None:
-        return float(lat.seg_own[s])
-    own = column.invariants(_state(lat, cell))
-    zone = (lat.cell_jp[cell], lat.cell_jm[cell])
-    index = 0 if family > 0 else 1
-    return float(lat.seg_own[s] + own[index] - zone[index])
 
 
 def _lineage(run: _Run) -> int:
