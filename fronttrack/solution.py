@@ -42,6 +42,9 @@ from .numbering import region_numbers
 from .units import to_si
 from .windows import window_record
 
+POSITION_ROUNDING = 1e-12
+"""Fronts closer than this fraction of the stack length are at one point (rounding)."""
+
 
 @dataclass(frozen=True)
 class SpallRecord:
@@ -387,12 +390,16 @@ class Solution:
         Fronts at one point meet at an event there.  Those born at it are ordered as an
         instant later (fastest rightmost); those about to arrive, when ``t`` is within
         rounding of the event but before it, as an instant earlier (slowest rightmost).
-        Last key: the latest-born.
+        Last key: the latest-born.  Positions within ``POSITION_ROUNDING`` of the stack
+        length of each other are one point: two rays extrapolated to the node where they
+        cross land a rounding apart, in either order, and read by position alone the
+        cell between them (of zero width) would stand for its neighbour.
         """
         a = self._segments()
         speed, t0, t1 = a["speed"][index], a["t0"][index], a["t1"][index]
         arriving = (t1 - t) < (t - t0)
-        return np.lexsort((t0, np.where(arriving, -speed, speed), pos[index]))
+        return np.lexsort((t0, np.where(arriving, -speed, speed),
+                           _points(pos[index], POSITION_ROUNDING * self.scene.length)))
 
     def _time_buckets(self) -> tuple[np.ndarray, np.ndarray, float]:
         """The front segments by time slice: ``(index, start, width)``, where the segments
@@ -626,7 +633,7 @@ class Solution:
         coords = [x_lo for x_lo, _, _ in cells[1:]]
         groups = []
         for c in coords:
-            near = live[np.abs(pos[live] - c) <= 1e-12 * length]
+            near = live[np.abs(pos[live] - c) <= POSITION_ROUNDING * length]
             groups.append([Crossing(bool(a["ray"][i]) and not math.isnan(a["invariant"][i]),
                                     int(a["family"][i]), float(a["invariant"][i]))
                            for i in near] or [Crossing(False)])
@@ -870,6 +877,15 @@ def _json_number(value):
 
 def _finite_or_none(value: float):
     return value if math.isfinite(value) else None
+
+
+def _points(positions: np.ndarray, tolerance: float) -> np.ndarray:
+    """The rank of each of ``positions`` (m) among the points they make, positions
+    closer than ``tolerance`` (m) to the next one in order counting as one point."""
+    order = np.argsort(positions, kind="stable")
+    ranks = np.empty(len(positions), dtype=np.int64)
+    ranks[order] = np.cumsum(np.diff(positions[order], prepend=-np.inf) > tolerance)
+    return ranks
 
 
 def station(scene, at) -> float:

@@ -437,3 +437,42 @@ def test_a_piston_pulling_away_from_a_porous_layer_separates_at_once():
     opened = [e for e in solution.events if e.kind is EventKind.GAP_OPEN]
     assert len(opened) == 1 and opened[0].t == 0.0
     assert solution.state_at(0.0, 0.1e-6).sigma == 0.0
+
+
+# --- the boundaries' work read from the cells the engine kept -------------------------
+def _gas_plate_lif_on_a_wall(negligible_stress):
+    """Campaign seed 433: 10 mm of gas, 3 mm of a finite-plastic plate at -300 m/s and
+    3 mm of LiF at +100 m/s (in 108 MPa of tension) on a wall, for 61 us."""
+    from fronttrack.scene import Accuracy, Layer, Scene
+    from materials import FinitePlastic
+    gas = IdealGas("M0", 5.0 / 3.0, 47.177148008265604)
+    plate = FinitePlastic("M1", 13336.122070615089, 5848.843894351104, 1.0340060061362892,
+                          1.1129069263567533, 126009160093.4701, 821955144.4761245)
+    layers = (Layer(gas, 10e-3, stress=2632834.2388610835),
+              Layer(plate, 3e-3, velocity=-300.0),
+              Layer(get("LiF"), 3e-3, velocity=100.0, stress=-107720174.34138036,
+                    bond="unbonded"))
+    return Scene(layers=layers, t_end=6.0950714508662825e-05, left=Boundary("free"),
+                 right=Boundary("wall"), accuracy=Accuracy(negligible_stress=negligible_stress))
+
+
+@pytest.mark.parametrize("negligible_stress", [None, 1.09e6])
+def test_a_wall_does_no_work_on_the_cells_read_at_it(negligible_stress):
+    # In the LiF lattice the C- ray leaving the wall and the next C+ arriving there cross
+    # at the middle of the cell at the wall (both move at the sound speed of that cell),
+    # and the record read the wall's cell there: two rays a rounding apart were ordered
+    # by position, so the zero-width cell between them stood for the cell at the wall
+    # (u = -7.3 m/s, 95 MPa off).  The balance booked that as the wall's work: seed 433
+    # at a quarter of its negligible stress (4.37 MPa) "created" +0.38 % of the energy
+    # (promise 0.2 %) and was off 0.85 % in momentum; at the default, a loss of 0.28 %
+    # hid one of 0.35 %.
+    solution = run(_gas_plate_lif_on_a_wall(negligible_stress))
+    wall = solution.cell_history("right")
+    assert all(state.u == 0.0 for state in wall.states)  # a wall reflects to u = 0 exactly
+    conservation = solution.conservation()
+    # what work is left is the gas's free face, at 0.016 Pa of rounding (of 2.6 MPa)
+    assert abs(conservation["work"]) < 1e-8 * conservation["energy_scale"]
+    balance = solution.accuracy_report["balance"]
+    # lattice rays across the gas's entropy contacts lose energy (class D); none is made
+    assert -2.0 * balance["promised"] < balance["energy_error"] < 0.0
+    assert balance["momentum_error"] < 1e-4  # 2e-5 and 6e-5: rays' momentum, rounding
