@@ -185,8 +185,8 @@ class Attribution:
                 me.decisions.append("drop")
             return specs
 
-        def patched_contact(engine, left, right, material, t, x, group):
-            kept = contact(engine, left, right, material, t, x, group)
+        def patched_contact(engine, left, right, material, t, x, group, *carriers):
+            kept = contact(engine, left, right, material, t, x, group, *carriers)
             if kept is None and left.e != right.e:
                 me.decisions.append("neglect")
             return kept

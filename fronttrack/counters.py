@@ -43,8 +43,10 @@ class Counters:
     (``fronttrack.fragment``);
     ``neglect_cost``: the sum of the bounds (J/m^2) on the energy the neglected entropy
     contacts that could make energy may have moved (``fronttrack.neglect``), and
-    ``history_cost`` the part of it spent on contacts whose yield offset was above the
-    negligible stress (plastic history forgotten; held to one budget for their sum).
+    ``history_cost`` what the contacts whose yield offset or energy jump was above the
+    negligible stress cost (plastic or thermal history forgotten; held to one budget for
+    their sum; a thermal one counted at its bound until its carrier's next event, then
+    at what it lost: ``fronttrack.neglect.hold``).
     """
 
     events: int = 0

@@ -196,6 +196,8 @@ def test_weak_waves_dropped_in_a_ringing_fragment_cost_what_they_made(monkeypatc
     # every weak reflection was kept, each a wave meeting every ray of the fragment
     # (4 545 events, 27 kept; to 0.8 us 21 762 events, 9 568 kept).  Settled at their
     # carriers' next events, the drops made 0.47 J/m^2 in all (4 492 events, none kept).
+    # Since the fragment's thermal contact is neglected (the test below), 851 families
+    # are judged to 0.6 us (1 405 before; 3 091 events), none kept.
     kept = []
     must_keep = dropped._must_keep
 
@@ -208,7 +210,27 @@ def test_weak_waves_dropped_in_a_ringing_fragment_cost_what_they_made(monkeypatc
     report, balance = solution.accuracy_report, solution.accuracy_report["balance"]
     kinetic = 0.5 * solution.regions[0].material.rho0 * 500.0**2 * 2e-4
     budget = dropped.BUDGET * balance["promised"] * kinetic
-    assert len(kept) > 1000 and not any(kept)
+    assert len(kept) > 500 and not any(kept)
     assert 0.0 < report["dropped_wave_cost"] < 0.05 * budget
     assert abs(balance["energy_error"]) <= balance["promised"]
     assert balance["momentum_error"] <= balance["promised"]
+
+
+def test_a_ringing_fragment_neglects_its_thermal_contact_and_its_events_stay_linear():
+    # The fragment makes a contact 264 kPa hotter on one side (the negligible stress is
+    # 246 kPa) once a ring period; it was kept for that energy jump alone though it
+    # reflects less, and from 0.45 us its weak reflections (0.25-0.3 MPa, weaker than
+    # an isentrope table resolves, so shocks) filled the fragment, each meeting every
+    # ray in a Riemann solve: 9 998 events to 1 us and 13 952 to 1.2 us (2 200 to
+    # 0.45 us), and to 1.8 us the event limit.  Neglected within the sum budget for
+    # such contacts, each settled at what the shock on its hotter side lost until its
+    # next event, it takes 4 916 events to 1 us: at most the 2 200 of 0.45 us grown as
+    # T^1.1 (5 295); its energy is lost within the promise (-1.24e-3)
+    solution = run(_ringing_fragment(1e-6))
+    report, balance = solution.accuracy_report, solution.accuracy_report["balance"]
+    kinetic = 0.5 * solution.regions[0].material.rho0 * 500.0**2 * 2e-4
+    assert solution.stats["events"] <= 2200 * (1.0 / 0.45) ** 1.1
+    assert -balance["promised"] <= balance["energy_error"] < 0.0
+    assert balance["momentum_error"] <= balance["promised"]
+    # what the thermal and plastic neglects cost stays within their sum budget
+    assert 0.0 < report["neglected_history_cost"] <= 0.25 * balance["promised"] * kinetic

@@ -1,6 +1,7 @@
 """Neglected entropy contacts may lose energy, never make it (``fronttrack.neglect``)."""
 
 import itertools
+import math
 
 import pytest
 
@@ -123,3 +124,31 @@ def test_neglects_that_lose_energy_are_held_to_the_budget_too():
     assert balance["momentum_error"] <= balance["promised"]
     assert report["neglected_contact_cost"] > 0.0
     assert not any("energy lost" in line for line in report["warnings"])
+
+
+def test_a_thermal_neglect_costs_what_its_carrier_lost_by_its_next_event():
+    # a contact whose energy jump (264 kPa, as in the spalled fragment of the symmetric
+    # Al 2024 impact) is above the negligible stress is held in the sum at its bound,
+    # 58 J/m^2 (the fragment's width), until the wave on its hotter side (5 400 m/s)
+    # meets its next event 3 ns later: it then costs what that wave lost sweeping the
+    # colder state, 264e3 x 5 400 x 3e-9 = 4.3 J/m^2
+    from types import SimpleNamespace
+
+    from fronttrack import neglect
+    from fronttrack.counters import Counters
+    engine = SimpleNamespace(counters=Counters(),
+                             neglect_budget=neglect.NeglectBudget(limit=348.0,
+                                                                  refresh=math.inf))
+    carrier = SimpleNamespace(id=11, speed=-5400.0)
+    assert neglect.affordable(engine, 58.0, 5e-6, history=True)
+    neglect.hold(engine, carrier, 264e3, 5e-6, 58.0)
+    assert engine.counters.history_cost == 58.0
+    neglect.settle(engine, SimpleNamespace(id=12), 5.003e-6)  # another front: nothing
+    assert engine.counters.history_cost == 58.0
+    neglect.settle(engine, carrier, 5.003e-6)
+    assert engine.counters.history_cost == pytest.approx(264e3 * 5400.0 * 3e-9, rel=1e-9)
+    assert not engine.neglect_budget.held
+    # without a carrier (its family dropped) the bound stays spent
+    assert neglect.affordable(engine, 58.0, 5e-6, history=True)
+    neglect.hold(engine, None, 264e3, 5e-6, 58.0)
+    assert engine.counters.history_cost == pytest.approx(58.0 + 4.2768, rel=1e-9)
