@@ -182,6 +182,19 @@ class _Point:
         return material._make_state(self.sigma, u, self.v, self.e, self.plastic_strain,
                                     self.accumulated)
 
+    def at_stress(self, sigma: float) -> _Point:
+        """The point carrying the stress ``sigma`` (Pa) instead of its own (a target
+        stress the branch reproduces to rounding); ``dataclasses.replace`` without its
+        cost, asked at most Riemann solves."""
+        return _Point(sigma, self.v, self.e, self.plastic_strain, self.accumulated,
+                      self.slope, self.speed)
+
+    def with_slope(self, slope: float, speed: float = math.nan) -> _Point:
+        """The same state with the branch slope ``slope`` (Pa kg/m^3) and characteristic
+        speed ``speed`` (m/s) of another branch through it."""
+        return _Point(self.sigma, self.v, self.e, self.plastic_strain, self.accumulated,
+                      slope, speed)
+
 
 @dataclasses.dataclass(frozen=True, slots=True)
 class HardenedState(State):
@@ -667,7 +680,7 @@ class FinitePlasticWaveCurve(StressRange):
         sigma = a + b * (e - w) + s - self._offset
         slope = a1 + b * (de - dw_dv) + ds_dv
         if v == start.v:   # no jump: the start itself (not its stress re-rounded)
-            return dataclasses.replace(start, slope=slope)
+            return start.with_slope(slope, start.speed)
         return _Point(sigma, v, e, ep, acc, slope)
 
     def _elastic_path(self, v: float, on_yield: bool = False) -> _Point:
@@ -680,7 +693,7 @@ class FinitePlasticWaveCurve(StressRange):
             s = self._s_a + 4.0 * mat.shear_modulus * (mat.strain(v) - self._eps_a) / 3.0
         c = mat.elastic_speed(v, e_h)
         if v == self._v_a and not on_yield:
-            return dataclasses.replace(self._start, slope=-c * c / mat.v0**2, speed=c)
+            return self._start.with_slope(-c * c / mat.v0**2, c)
         return _Point(p + s - self._offset, v, e_h + mat.shear_energy(s), a.plastic_strain,
                       self._acc_a, -c * c / mat.v0**2, c)
 
@@ -865,7 +878,7 @@ class FinitePlasticWaveCurve(StressRange):
         """The state at volume ``v`` (m^3/kg) on the plastic release path (closed form),
         carrying the stress ``sigma`` (Pa, the path's to rounding) and velocity ``u`` (m/s)."""
         point = self._plastic_path(self._knee_down, -1, v)
-        return dataclasses.replace(point, sigma=float(sigma)).state(u, self.material)
+        return point.at_stress(float(sigma)).state(u, self.material)
 
     # --- range ---------------------------------------------------------------------------
     def sigma_limits(self) -> tuple[float, float]:
@@ -994,13 +1007,13 @@ class FinitePlasticWaveCurve(StressRange):
         loading = sigma > self.ahead.sigma
         if self._region(sigma) == "snap":
             kind = "shock" if loading or self.release == "hugoniot" else "fan"
-            result = (dataclasses.replace(self._knee_up if loading else self._knee_down,
-                                          sigma=float(sigma)), None, kind)
+            result = ((self._knee_up if loading else self._knee_down).at_stress(float(sigma)),
+                      None, kind)
             self._last = (sigma, result)
             return result
         v, plastic, kind, branch = self._root(sigma)
         # the state carries the target stress itself (the branch reproduces it to rounding)
-        point = dataclasses.replace(branch(v), sigma=float(sigma))
+        point = branch(v).at_stress(float(sigma))
         knee_point = None
         if plastic:
             knee_point = self._knee_up if loading else self._knee_down
