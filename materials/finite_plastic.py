@@ -182,6 +182,19 @@ class _Point:
         return material._make_state(self.sigma, u, self.v, self.e, self.plastic_strain,
                                     self.accumulated)
 
+    def at_stress(self, sigma: float) -> _Point:
+        """The point carrying the stress ``sigma`` (Pa) instead of its own (a target
+        stress the branch reproduces to rounding); ``dataclasses.replace`` without its
+        cost, asked at most Riemann solves."""
+        return _Point(sigma, self.v, self.e, self.plastic_strain, self.accumulated,
+                      self.slope, self.speed)
+
+    def with_slope(self, slope: float, speed: float = math.nan) -> _Point:
+        """The same state with the branch slope ``slope`` (Pa kg/m^3) and characteristic
+        speed ``speed`` (m/s) of another branch through it."""
+        return _Point(self.sigma, self.v, self.e, self.plastic_strain, self.accumulated,
+                      slope, speed)
+
 
 @dataclasses.dataclass(frozen=True, slots=True)
 class HardenedState(State):
@@ -504,6 +517,28 @@ def _root(c2: float, name: str, v: float) -> float:
     return math.sqrt(c2)
 
 
+_BASIS = ("_v_a", "_eps_a", "_s_a", "_acc_a", "_radius", "_e_h", "_offset", "_start",
+          "head_speed", "_v_min", "_v_max", "_v_high", "_v_low", "_knee_up", "_knee_down",
+          "yield_high", "yield_low", "_g_high", "_g_low_value")
+"""What a ``FinitePlasticWaveCurve`` computes from its ahead state alone (not from its
+direction), as it stands after construction: shared by the curves of one ahead state."""
+
+_MAX_BASES = 4096
+"""Ahead states whose curve bases (and path-table panels) a material keeps; beyond it
+the store starts again (a basis is rebuilt identically when asked again)."""
+
+
+def _basis_key(material: FinitePlastic, ahead: State, release: str) -> tuple | None:
+    """The exact key of an ahead state's curve basis: the bits of every field the basis
+    reads (``-0.0`` apart from ``0.0``), or ``None`` (not shared) for a state whose
+    fields are not plain floats."""
+    fields = (ahead.sigma, ahead.v, ahead.e, ahead.plastic_strain,
+              material.accumulated_plastic_strain(ahead))
+    if any(type(x) is not float for x in fields):
+        return None
+    return (release, *(x.hex() for x in fields))
+
+
 class FinitePlasticWaveCurve(StressRange):
     """Wave curve of a ``FinitePlastic`` solid (same interface as ``HydrodynamicWaveCurve``).
 
@@ -522,11 +557,35 @@ class FinitePlasticWaveCurve(StressRange):
     def __init__(self, material: FinitePlastic, ahead: State, direction: int,
                  release: str = "isentrope"):
         check_curve_arguments(direction, release)
-        mat = material
-        self.material = mat
+        self.material = material
         self.ahead = ahead
         self.direction = direction
         self.release = release
+        self._limits: tuple[float, float] | None = None
+        self._last: tuple[float, tuple] | None = None
+        self._last_root: tuple[float, tuple] | None = None
+        self._last_states: tuple[float, tuple] | None = None
+        self._fan_speeds: dict[float, float] = {}
+        self._tables: dict[tuple[str, bool], PathTable] = {}
+        self._ends: dict[tuple, tuple[tuple[float, float], float]] = {}
+        key = _basis_key(material, ahead, release)
+        bases = material.__dict__.setdefault("_curve_bases", {})
+        basis = bases.get(key) if key is not None else None
+        if basis is None:
+            self._knees(material, ahead, release)
+            basis = ({name: getattr(self, name) for name in _BASIS}, {})
+            if key is not None:
+                if len(bases) >= _MAX_BASES:
+                    bases.clear()
+                bases[key] = basis
+        else:
+            self.__dict__.update(basis[0])
+        self._panel_stores: dict[tuple[str, bool], list] = basis[1]
+
+    def _knees(self, mat: FinitePlastic, ahead: State, release: str) -> None:
+        """The curve's basis (``_BASIS``): the ahead state's strain, deviator, yield
+        radius (Pa), hydrostatic energy (J/kg) and elastic speed (m/s), and the yield
+        points reached by loading and unloading elastic waves, with their stresses."""
         v_a = float(ahead.v)
         self._v_a = v_a
         self._eps_a = mat.strain(v_a)
@@ -540,13 +599,6 @@ class FinitePlasticWaveCurve(StressRange):
         self.head_speed = mat.elastic_speed(v_a, self._e_h)
         self._v_min, self._v_max = mat.volume_range()
         self._v_max *= 1.0 - 1e-12
-        self._limits: tuple[float, float] | None = None
-        self._last: tuple[float, tuple] | None = None
-        self._last_root: tuple[float, tuple] | None = None
-        self._last_states: tuple[float, tuple] | None = None
-        self._fan_speeds: dict[float, float] = {}
-        self._tables: dict[tuple[str, bool], PathTable] = {}
-        self._ends: dict[tuple, tuple[tuple[float, float], float]] = {}
         g, r = mat.shear_modulus, self._radius
         if math.isfinite(r):
             tol = mat.yield_tolerance(self._s_a, r)
@@ -628,7 +680,7 @@ class FinitePlasticWaveCurve(StressRange):
         sigma = a + b * (e - w) + s - self._offset
         slope = a1 + b * (de - dw_dv) + ds_dv
         if v == start.v:   # no jump: the start itself (not its stress re-rounded)
-            return dataclasses.replace(start, slope=slope)
+            return start.with_slope(slope, start.speed)
         return _Point(sigma, v, e, ep, acc, slope)
 
     def _elastic_path(self, v: float, on_yield: bool = False) -> _Point:
@@ -641,7 +693,7 @@ class FinitePlasticWaveCurve(StressRange):
             s = self._s_a + 4.0 * mat.shear_modulus * (mat.strain(v) - self._eps_a) / 3.0
         c = mat.elastic_speed(v, e_h)
         if v == self._v_a and not on_yield:
-            return dataclasses.replace(self._start, slope=-c * c / mat.v0**2, speed=c)
+            return self._start.with_slope(-c * c / mat.v0**2, c)
         return _Point(p + s - self._offset, v, e_h + mat.shear_energy(s), a.plastic_strain,
                       self._acc_a, -c * c / mat.v0**2, c)
 
@@ -733,7 +785,8 @@ class FinitePlasticWaveCurve(StressRange):
         if table is None:
             mat = self.material
             table = PathTable(lambda p0, p1: self._path_arrays(branch, p0, p1), start, end,
-                              _PANEL_FRACTION * mat.v0, mat.rho0)
+                              _PANEL_FRACTION * mat.v0, mat.rho0,
+                              store=self._panel_stores.setdefault(key, []))
             self._tables[key] = table
         return table
 
@@ -825,7 +878,7 @@ class FinitePlasticWaveCurve(StressRange):
         """The state at volume ``v`` (m^3/kg) on the plastic release path (closed form),
         carrying the stress ``sigma`` (Pa, the path's to rounding) and velocity ``u`` (m/s)."""
         point = self._plastic_path(self._knee_down, -1, v)
-        return dataclasses.replace(point, sigma=float(sigma)).state(u, self.material)
+        return point.at_stress(float(sigma)).state(u, self.material)
 
     # --- range ---------------------------------------------------------------------------
     def sigma_limits(self) -> tuple[float, float]:
@@ -954,13 +1007,13 @@ class FinitePlasticWaveCurve(StressRange):
         loading = sigma > self.ahead.sigma
         if self._region(sigma) == "snap":
             kind = "shock" if loading or self.release == "hugoniot" else "fan"
-            result = (dataclasses.replace(self._knee_up if loading else self._knee_down,
-                                          sigma=float(sigma)), None, kind)
+            result = ((self._knee_up if loading else self._knee_down).at_stress(float(sigma)),
+                      None, kind)
             self._last = (sigma, result)
             return result
         v, plastic, kind, branch = self._root(sigma)
         # the state carries the target stress itself (the branch reproduces it to rounding)
-        point = dataclasses.replace(branch(v), sigma=float(sigma))
+        point = branch(v).at_stress(float(sigma))
         knee_point = None
         if plastic:
             knee_point = self._knee_up if loading else self._knee_down

@@ -78,6 +78,10 @@ rounding noise of the sampled values alone puts the coefficients of an interpola
 has converged at a few ``2^-52`` of the largest, so the tail carries nothing but noise."""
 
 
+_MAX_KEPT = 4096
+"""Answers of ``PathTable.stress`` a table keeps; beyond it the store starts again."""
+
+
 _SLIVER = 1e-9
 """A panel ending within this fraction of its width of the path's end ends there."""
 
@@ -109,19 +113,34 @@ class PathTable:
         beyond each panel (see the module notes).
     rho0 : float
         Reference density (kg/m^3) in ``J``.
+    store : list, optional
+        Panels shared with other tables of the same path (same ``sample``, ``start``,
+        ``end``, ``width`` and ``rho0``): a panel one of them built is taken from it, not
+        sampled again.  Each table still reaches only as far as its own calls have
+        asked (``within``), so what it answers does not depend on the others.
     """
 
     def __init__(self, sample: Callable[[float, float], tuple[np.ndarray, np.ndarray]],
-                 start: float, end: float, width: float, rho0: float):
+                 start: float, end: float, width: float, rho0: float,
+                 store: list | None = None):
         self._sample = sample
+        self._store = [] if store is None else store
         self.start = float(start)
         self.end = float(end)
         self._step = math.copysign(width, self.end - self.start)
         self._rho0 = rho0
         self._edges = [self.start]        # panel edges, from the start
         self._panels: list[tuple] = []    # (p0, p1, sigma series, C series, J series, J0)
+        self._last: tuple | None = None   # (v, panel, x) of the last volume located
+        self._stresses: dict[float, tuple[float, float]] = {}   # stress(v) by v
 
     def _build_next(self) -> None:
+        index = len(self._panels)
+        if index < len(self._store):   # built by a table of the same path
+            panel = self._store[index]
+            self._panels.append(panel)
+            self._edges.append(panel[1])
+            return
         p0 = self._edges[-1]
         p1 = p0 + self._step
         if (p1 - self.end) * self._step > -_SLIVER * self._step**2:   # no sliver at the end
@@ -134,19 +153,24 @@ class PathTable:
         if self._panels:
             last = self._panels[-1]
             j0 = last[5] + _clenshaw(last[4], 1.0)
-        self._panels.append((p0, p1, _series(c_sigma), _series(c_speed), _series(c_j), j0))
+        panel = (p0, p1, _series(c_sigma), _series(c_speed), _series(c_j), j0)
+        self._panels.append(panel)
+        self._store.append(panel)
         self._edges.append(p1)
 
     def _panel(self, v: float) -> tuple:
         """The panel holding ``v``, built (with those before it) if needed."""
         step = self._step
+        offset = (v - self.start) / step
+        index = int(offset)
+        panels = self._panels
+        if 0 <= index < len(panels) - 1:   # a whole panel before the last edge: built
+            return panels[index]
         while (v - self._edges[-1]) * step > 0.0 and self._edges[-1] != self.end:
             self._build_next()
-        if not self._panels:
+        if not panels:
             self._build_next()
-        offset = (v - self.start) / step
-        index = min(max(int(offset), 0), len(self._panels) - 1)
-        return self._panels[index]
+        return panels[min(max(index, 0), len(panels) - 1)]
 
     def within(self, v: float) -> bool:
         """True when ``v`` lies on the panels built so far (or on the first panel, which
@@ -157,22 +181,37 @@ class PathTable:
         reach = self._edges[-1] if self._panels else self.start + self._step
         return (v - reach) * self._step <= 0.0
 
-    @staticmethod
-    def _x(panel: tuple, v: float) -> float:
+    def _locate(self, v: float) -> tuple[tuple, float]:
+        """``(panel, x)``: the panel holding ``v`` and ``v`` mapped to its ``[-1, 1]``;
+        the last answer is kept (a Riemann solve asks ``integral`` at the volume it has
+        just asked ``stress`` at)."""
+        last = self._last
+        if last is not None and last[0] == v:
+            return last[1], last[2]
+        panel = self._panel(v)
         p0, p1 = panel[0], panel[1]
-        return 2.0 * (v - p0) / (p1 - p0) - 1.0 if p1 != p0 else -1.0
+        x = 2.0 * (v - p0) / (p1 - p0) - 1.0 if p1 != p0 else -1.0
+        self._last = (v, panel, x)
+        return panel, x
 
     def stress(self, v: float) -> tuple[float, float]:
         """``(sigma, dsigma/dv)`` on the path at ``v`` (Pa, Pa kg/m^3), the slope
-        ``-(C/v0)^2 = -(rho0 C)^2``."""
-        panel = self._panel(v)
-        x = self._x(panel, v)
+        ``-(C/v0)^2 = -(rho0 C)^2``.  Answers are kept by volume (up to
+        ``_MAX_KEPT``): root searches on one table ask the same volumes again."""
+        kept = self._stresses.get(v)
+        if kept is not None:
+            return kept
+        panel, x = self._locate(v)
         speed = self._rho0 * _clenshaw(panel[3], x)
-        return _clenshaw(panel[2], x), -speed * speed
+        answer = _clenshaw(panel[2], x), -speed * speed
+        if len(self._stresses) >= _MAX_KEPT:
+            self._stresses.clear()
+        self._stresses[v] = answer
+        return answer
 
     def integral(self, v: float) -> float:
         """``J(v) = int_{start}^{v} rho0 C dw`` (m/s)."""
         if v == self.start:
             return 0.0
-        panel = self._panel(v)
-        return panel[5] + _clenshaw(panel[4], self._x(panel, v))
+        panel, x = self._locate(v)
+        return panel[5] + _clenshaw(panel[4], x)

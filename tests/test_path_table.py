@@ -17,7 +17,7 @@ import numpy as np
 import pytest
 from scipy.integrate import quad
 
-from materials import LEFT, RIGHT, FinitePlastic
+from materials import LEFT, RIGHT, FinitePlastic, State
 from materials.path_table import PathTable, panel_integral, panel_nodes
 
 RHO = 2703.0
@@ -137,3 +137,64 @@ def test_release_fans_agree_with_quadrature_of_the_closed_form_path(seed):
     speed = curve.characteristic_speed(sigma)
     assert curve.velocity_change(sigma)[1] == pytest.approx(1.0 / (material.rho0 * speed),
                                                             rel=1e-12)
+
+
+# --- panels and curve bases shared between tables and curves of one path ----------------
+def test_tables_of_one_path_share_panels_but_each_reaches_only_as_asked():
+    sample, _ = _exponential(4.0 / V0, 1e10)
+    calls = []
+
+    def counted(p0, p1):
+        calls.append(p0)
+        return sample(p0, p1)
+
+    store: list = []
+    first = PathTable(counted, V0, 1.5 * V0, 0.05 * V0, RHO, store=store)
+    first.integral(1.12 * V0)                      # three panels sampled
+    assert len(calls) == 3 and len(store) == 3
+    second = PathTable(counted, V0, 1.5 * V0, 0.05 * V0, RHO, store=store)
+    alone = PathTable(sample, V0, 1.5 * V0, 0.05 * V0, RHO)
+    # the second table has asked nothing yet: it reaches its first panel only, as
+    # a table of its own would (the closed form answers beyond, in a root search)
+    assert second.within(1.049 * V0) and not second.within(1.051 * V0)
+    for v in (1.01 * V0, 1.07 * V0, 1.12 * V0, 1.22 * V0):
+        assert second.stress(v) == alone.stress(v)
+        assert second.integral(v) == alone.integral(v)
+    assert len(calls) == 5                          # only the two beyond the first's reach
+    assert second.within(1.249 * V0) and not second.within(1.251 * V0)
+
+
+def _without_curves(waves) -> list:
+    """Waves as their states and speeds (a fan also names the curve it came from)."""
+    return [(type(w), w.ahead, w.behind, getattr(w, "speed", None),
+             getattr(w, "head_speed", None), getattr(w, "tail_speed", None)) for w in waves]
+
+
+def test_curves_of_one_ahead_state_share_their_basis_and_answer_as_alone():
+    """Two curves from one state of one material share what the state fixes (knees, path
+    panels), and answer bit for bit as a curve of an unshared copy of the material."""
+    def solid():
+        return FinitePlastic("Al6061", RHO, 5350.0, 1.34, 2.0, 26.0e9, 0.29e9)
+
+    shared, alone = solid(), solid()
+    shocked = shared.wave_curve(shared.reference_state(), RIGHT).state_at(12e9)
+    ahead = shared.wave_curve(shocked, LEFT).state_at(4e9)
+    stresses = [3.9e9, 2e9, 1e8, -5e8, 4.5e9, 9e9]
+    first = shared.wave_curve(ahead, LEFT)
+    for sigma in stresses[::-1]:
+        first.velocity_change(sigma)
+    second = shared.wave_curve(ahead, RIGHT)
+    assert second._knee_down is first._knee_down and second._panel_stores is first._panel_stores
+    built = sum(len(store) for store in first._panel_stores.values())
+    reference = alone.wave_curve(ahead, RIGHT)
+    for sigma in stresses:
+        assert second.velocity_change(sigma) == reference.velocity_change(sigma)
+        assert second.state_at(sigma) == reference.state_at(sigma)
+        assert _without_curves(second.waves(sigma)) == _without_curves(reference.waves(sigma))
+    assert sum(len(store) for store in first._panel_stores.values()) == built
+    # a zero of either sign is its own key: the knees keep the sign of their stress
+    rest = shared.reference_state()
+    assert rest.sigma == 0.0
+    negative = State(-0.0, rest.u, rest.v, rest.e, rest.plastic_strain)
+    assert shared.wave_curve(negative, RIGHT)._start is not \
+        shared.wave_curve(rest, RIGHT)._start
