@@ -384,6 +384,10 @@ class Solution:
                                 vertices=tuple(patch.polygon(i)), birth=patch.birth(i))
         return self.region_table.record(found)
 
+    def _end_time(self) -> float:
+        """When the run ended (s): ``t_end``, or where a time limit stopped it."""
+        return self.stats.get("stopped", {}).get("t", self.scene.t_end)
+
     def _spatial_order(self, index: np.ndarray, pos: np.ndarray, t: float) -> np.ndarray:
         """Order (left to right at time ``t``) of the front segments ``index``.
 
@@ -397,7 +401,10 @@ class Solution:
         """
         a = self._segments()
         speed, t0, t1 = a["speed"][index], a["t0"][index], a["t1"][index]
-        arriving = (t1 - t) < (t - t0)
+        # a front still alive when the run ends (t1 at its end) is not arriving anywhere:
+        # a detonation shock and the head of its Taylor fan, born together, part by
+        # rounding (1e-15 of their speed) and stay a rounding apart to t_end
+        arriving = ((t1 - t) < (t - t0)) & (t1 < self._end_time())
         return np.lexsort((t0, np.where(arriving, -speed, speed),
                            _points(pos[index], POSITION_ROUNDING * self.scene.length)))
 
