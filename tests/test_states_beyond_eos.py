@@ -190,7 +190,10 @@ def test_an_aluminium_flyer_on_polystyrene_foam_runs_and_keeps_its_balance():
     assert solution.state_at(0.6e-3, 0.12e-6).sigma == pytest.approx(star.sigma, rel=1e-9)
     balance = solution.accuracy_report["balance"]
     assert abs(balance["momentum_error"]) < 1e-4
-    assert abs(balance["energy_error"]) < 1e-4
+    # a loss, of the waves and the thermal contacts neglected within their budgets
+    # (-1.03e-4 in 973 events since those contacts share the history contacts' budget;
+    # -2.5e-5 in 1 148 events before)
+    assert -2e-4 < balance["energy_error"] <= 0.0
 
 
 def test_an_expanded_matrix_released_into_tension_stops_at_its_spinodal():
