@@ -510,7 +510,8 @@ class Engine:
         budgeted = keep and res.negligible > 0.0 and math.isfinite(left.v + right.v)
         if budgeted:
             keep = (material.contact_reflection(left, right, res.stress_scale) > res.negligible
-                    or not self._neglectable(left, right, material, t, x, group, carriers))
+                    or not self._neglectable(left, right, material, t, x, group, carriers,
+                                             heat))
         if keep and _contact_within(group, x, self.acc.contact_resolution):
             keep, budgeted = False, False
             counters.unresolved_contacts += 1
@@ -525,9 +526,10 @@ class Engine:
         return None
 
     def _neglectable(self, left: State, right: State, material, t: float, x: float, group,
-                     carriers) -> bool:
+                     carriers, heat: float) -> bool:
         """Whether the energy that neglecting a contact between the star states ``left``
-        and ``right`` may make or lose fits the budget (``fronttrack.neglect``).
+        and ``right`` (energy jump ``heat`` = ``rho0 |e_L - e_R|``, Pa) may make or lose
+        fits the budget (``fronttrack.neglect``).
 
         A contact whose energy jump ``rho0 |e_L - e_R|`` or yield offset is above the
         negligible stress carries history (thermal or plastic) the run forgets: it is
@@ -540,7 +542,6 @@ class Engine:
         filled the fragment and the run to 18 us stopped at the event limit."""
         res = self.resolution
         cost = neglect.neglect_cost(self, material, group, x, left, right, t)
-        heat = material.rho0 * abs(left.e - right.e)
         plastic = material.yield_offset(left, right) > res.negligible
         if not neglect.affordable(self, cost, t, history=plastic or heat > res.negligible):
             return False

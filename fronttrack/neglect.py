@@ -143,7 +143,8 @@ def hold(engine, carrier, heat: float, t: float, cost: float) -> None:
     e_R|`` (J/m^3) and its bound ``cost`` (J/m^2) counted in the sum: ``carrier``, the
     wave on its hotter side, loses ``heat |U|`` (W/m^2) sweeping the colder state until
     its next event (``settle``).  Without a carrier (the hotter family dropped or
-    empty) the bound stays spent."""
+    empty), or for an earlier contact the same carrier still holds, the bound stays
+    spent (the sum is charged more, never less, than was lost)."""
     if carrier is not None:
         engine.neglect_budget.held[carrier.id] = (heat * abs(carrier.speed), t, cost)
 

@@ -420,8 +420,8 @@ class PorousWaveCurve(StressRange):
         # the residual's rounding: of its largest terms, the reference curve and the
         # energy's, which cancel to a small stress (campaign seed 680: a compaction from
         # 0.452374 GPa to itself missed by more than the stresses' rounding alone)
-        noise = 8.0 * _EPS * (abs(sigma) * alpha + abs(start.sigma)
-                              + abs(float(solid._a(hi / alpha)))
+        reference = abs(float(solid._a(hi / alpha)))
+        noise = 8.0 * _EPS * (abs(sigma) * alpha + abs(start.sigma) + reference
                               + abs(b) * (abs(start.e) + 0.5 * abs(load) * (start.v - hi)))
         try:
             f_hi = residual(hi)[0]
@@ -431,10 +431,12 @@ class PorousWaveCurve(StressRange):
             # of state (campaign seed 680: 0.06 Pa from 0.145 GPa, with no root beside it)
             # (campaign seed 839: a hot expanded foam at -0.29 uPa, which its equation of
             # state puts at +0.50 uPa, compacted by 0.28 uPa: within the start's own
-            # mismatch, where its cancelling terms of 2.6e7 Pa leave 8e-7)
-            mismatch = abs(mat.stress_with_history(start, start.v, start.e) - start.sigma)
-            tiny = abs(sigma - start.sigma) <= max(_STATE_ROUNDING * abs(start.sigma),
-                                                   2.0 * mismatch)
+            # mismatch, where its cancelling terms of 2.6e7 Pa leave 8e-7; that stress is
+            # evaluated only for a jump that small against those terms)
+            jump = abs(sigma - start.sigma)
+            tiny = jump <= _STATE_ROUNDING * abs(start.sigma) or (
+                jump <= _STATE_ROUNDING * reference and jump <= 2.0 * abs(
+                    mat.stress_with_history(start, start.v, start.e) - start.sigma))
             v = hi if abs(f_hi) <= noise or tiny else bracketed_newton(
                 residual, lo, hi, rel_tol=2e-16, f_hi=f_hi, f_tol=noise)
         except (NoSolutionError, StateOutOfRangeError):
