@@ -78,6 +78,11 @@ class Products(Material):
                 raise MaterialError(f"{name}: JWL {field} must be >= 0 Pa, got {value!r}")
         self.spall_strength = 0.0
         self.is_gamma_law = self.A == 0.0 and self.B == 0.0
+        # A gamma-law gas's Hugoniot reaches any stress at its limiting compression, from
+        # a cold state (e = -q, left by a release to zero stress) as from a hot one: wave
+        # curves then shock it to that compression (the snowplow).  A JWL's exponential
+        # terms can bend a cold state's Hugoniot back to tension: not claimed.
+        self.unbounded_hugoniot = self.is_gamma_law
 
     @classmethod
     def gamma_law(cls, name: str, rho0: float, gamma: float, q: float) -> Products:

@@ -146,7 +146,7 @@ def solve_contact(left_material, left: State, right_material, right: State,
         # gas cannot pull at all: vacuum forms), and bonded_sigma is that limit
         return _separate(curve_l, curve_r, lo)
     sigma = bracketed_newton(phi, lo, hi, guess, f_lo=phi_lo, f_hi=phi_hi,
-                             f_tol=noise * max(1.0, max(abs(lo), abs(hi)) / max(abs(guess), 1.0)))
+                             f_tol=noise * max(1.0, max(abs(lo), abs(hi)) / max(stress_scale, 1.0)))
     return _bonded(curve_l, curve_r, sigma)
 
 

@@ -337,3 +337,29 @@ def test_znd_profile_from_spike_to_cj():
     assert profile.distance[-1] == pytest.approx(2.0 * d / k, rel=1e-12)
     with pytest.raises(MaterialError, match="rate"):
         znd_profile(m, 0.0)
+
+
+def test_cold_gamma_law_products_are_shocked_to_their_limiting_compression():
+    """Gamma-law products released to zero stress keep e = -q at a finite volume (a cold
+    gas).  Their Hugoniot from there is the snowplow: every stress at
+    v_lim = v_a (gamma - 1)/(gamma + 1), with u_b - u_a = sqrt(sigma (v_a - v_lim)).
+    The states of a random scene (fuzz seed 420: products behind a wall meeting the
+    hot products of the detonation, separating at 3 182 m/s) were refused as "needs a
+    stress above 0.0007 GPa", the Hugoniot's stress at the representable limit.  The
+    contact velocities agree to the solver's rounding (they were 0.01 m/s apart while
+    the root's tolerance scaled with the snowplow's 1 PPa bracket over a zero guess)."""
+    tnt = book_tnt()
+    cold = State(sigma=0.0, u=-2363.1270311547805, v=0.0011335282127277878, e=-4.9e6,
+                 plastic_strain=BURNT)
+    hot = State(sigma=21521190438.583096, u=818.9430896478634, v=0.0004785367604452429,
+                e=1536675.4708779287, plastic_strain=BURNT)
+    sol = solve_contact(tnt, cold, tnt, hot, tensile_strength=25.088e6, release="hugoniot")
+    star = sol.left_star
+    assert not sol.separated and star.sigma == pytest.approx(sol.right_star.sigma, rel=1e-12)
+    assert star.u == pytest.approx(sol.right_star.u, rel=1e-12)
+    v_lim = cold.v * (2.6 - 1.0) / (2.6 + 1.0)
+    assert star.v == pytest.approx(v_lim, rel=1e-9)
+    # Jump conditions of the left-facing snowplow shock: momentum and energy.
+    assert cold.u - star.u == pytest.approx(math.sqrt(star.sigma * (cold.v - v_lim)), rel=1e-9)
+    assert star.e - cold.e == pytest.approx(0.5 * star.sigma * (cold.v - v_lim), rel=1e-9)
+    assert 0.0 < star.sigma < hot.sigma
