@@ -223,8 +223,9 @@ def _solve(scene, quiet: bool):
         rang = len(report["fragments_ringing"])
         rang = f", {rang} free fragments rang in closed form" if rang else ""
         carried = report["suppressed_spalls"]
-        carried = (f" ({carried} fractures closer than {report['spall_spacing'] * 1e6:.3g} um "
-                   f"to a plane carried as tension)" if carried else "")
+        carried = (f" ({carried} fractures inside a zone or closer than "
+                   f"{report['spall_spacing'] * 1e6:.3g} um to a plane carried as tension)"
+                   if carried else "")
         print(f"{start}{scene.title or 'scene'}: {stats['events']} events, "
               f"{stats['fronts']} fronts, "
               f"{len(solution.spalls)} spall planes{carried}, "
