@@ -222,9 +222,14 @@ def _solve(scene, quiet: bool):
         stats, report = solution.stats, solution.accuracy_report
         rang = len(report["fragments_ringing"])
         rang = f", {rang} free fragments rang in closed form" if rang else ""
+        carried = report["suppressed_spalls"]
+        carried = (f" ({carried} fractures inside a zone or closer than "
+                   f"{report['spall_spacing'] * 1e6:.3g} um to a plane carried as tension)"
+                   if carried else "")
         print(f"{start}{scene.title or 'scene'}: {stats['events']} events, "
               f"{stats['fronts']} fronts, "
-              f"{len(solution.spalls)} spall planes, solved in {stats['solve_time']:.3g} s "
+              f"{len(solution.spalls)} spall planes{carried}, "
+              f"solved in {stats['solve_time']:.3g} s "
               f"(release: {report['release']}, {report['dropped_waves']} waves below "
               f"{report['negligible_stress']:.3g} Pa dropped, {report['coalesced_fronts']} "
               f"pairs of fronts closer than {report['coalesce_length'] * 1e6:.3g} um "

@@ -246,10 +246,11 @@ class Accuracy:
     contacts that interactions leave inside a material (neglecting them changes volume
     and energy, never stress or velocity).  ``max_events``: stop with an error beyond
     this many events.  ``spall_spacing`` (m): no new spall plane closer than this to an
-    earlier one (the tension there is carried and reported, unless it would leave the
-    equations of state); ``None`` leaves it to the fracture zone the threshold model
-    predicts.  ``contact_resolution`` (m): an entropy contact born closer than this to
-    the neighbouring contact is merged like a negligible one (counted in the report);
+    earlier one of its layer (the tension there is carried and reported, unless it would
+    leave the equations of state); ``None`` takes the records' resolution length
+    (``coalesce_length``): a slab thinner than that between two planes is not resolved.
+    ``contact_resolution`` (m): an entropy contact born closer than this to the
+    neighbouring contact is merged like a negligible one (counted in the report);
     0, the default, keeps every one.  ``coalesce_length`` (m): the resolution length of
     the records: two waves of one family moving at one speed, or two contacts, closer
     than this become one front, and weak ones farther apart too while the weaker jump

@@ -32,7 +32,7 @@ import numpy as np
 from characteristics.reconstruct import Cell, Crossing, knots
 from materials import State
 
-from . import dropped, ring_records
+from . import dropped, ring_records, spall
 from .archive import FrontTable, RegionTable, compact
 from .errors import SceneError
 from .event_log import EventRecord
@@ -253,7 +253,7 @@ class Solution:
             "gathered_fronts": counters.gathered,
             "gathered_momentum": counters.gathered_momentum,
             "gathered_energy": counters.gathered_energy,
-            "spall_spacing": acc.spall_spacing,
+            "spall_spacing": spall.spacing(engine),
             "fracture_zones": [{"layer": z.layer, "x_lo": z.x_lo, "x_hi": z.x_hi, "t": z.t}
                                for z in engine.fracture_zones],
             "suppressed_spalls": counters.suppressed_spalls,

@@ -10,8 +10,14 @@ outruns the relief); the material there is reported as a fractured zone and its
 tension is carried, not split into plates one characteristic apart.
 
 Outside lattices (a tension made by a shock, at a contact) the Riemann problem at the
-event separates; there too a point inside an earlier zone, or closer than
-``accuracy.spall_spacing`` to an earlier plane, carries the tension instead.
+event separates; there too a point inside an earlier zone, or closer than the spall
+spacing (``spacing``) to an earlier plane, carries the tension instead.
+
+No plane is made closer than the spall spacing to an earlier plane of its layer, be it
+from a Riemann problem or from a lattice's zone (a zone's end that close to its first
+point, or a first point that close to an earlier plane): the slab between would be a
+fragment thinner than the records resolve.  ``accuracy.spall_spacing`` sets the
+spacing; by default it is the records' resolution length (``coalesce_length``).
 """
 
 from __future__ import annotations
@@ -22,7 +28,7 @@ from dataclasses import dataclass
 
 from characteristics.fracture import FractureZone
 
-from .solution import SpallRecord
+from . import solution
 
 
 @dataclass(frozen=True)
@@ -88,13 +94,22 @@ def next_scheduled(engine, t: float) -> float:
     return pending[0] if pending else math.inf
 
 
+def spacing(engine) -> float:
+    """The distance (m) from a plane within which no other plane of its layer is made:
+    ``accuracy.spall_spacing``, by default the records' resolution length (a plane
+    closer than that would bound a fragment the records do not resolve)."""
+    if engine.acc.spall_spacing is not None:
+        return engine.acc.spall_spacing
+    return engine.resolution.coalesce_length
+
+
 def carried_intervals(engine, layer: int) -> tuple:
     """``(x_lo, x_hi)`` intervals of ``layer`` (m) where tension is carried, not fractured:
-    the fracture zones, and ``accuracy.spall_spacing`` around each plane."""
+    the fracture zones, and the spall spacing (``spacing``) around each plane."""
     intervals = [(z.x_lo, z.x_hi) for z in engine.fracture_zones if z.layer == layer]
-    spacing = engine.acc.spall_spacing or 0.0
-    if spacing > 0.0:
-        intervals += [(s.x - spacing, s.x + spacing) for s in engine.spalls
+    width = spacing(engine)
+    if width > 0.0:
+        intervals += [(s.x - width, s.x + width) for s in engine.spalls
                       if s.layer == layer]
     return tuple(intervals)
 
@@ -104,8 +119,14 @@ def suppressed(engine, x: float, layer: int) -> bool:
     return any(lo < x < hi for lo, hi in carried_intervals(engine, layer))
 
 
+def beside_plane(engine, x: float, layer: int) -> bool:
+    """True when ``x`` (m) lies closer than the spall spacing to a plane of ``layer``."""
+    within = spacing(engine)
+    return any(abs(s.x - x) < within for s in engine.spalls if s.layer == layer)
+
+
 def record(engine, x: float, t: float, tension: float, strength: float, layer: int,
            zone: tuple | None = None) -> None:
     """Add a fracture to the solution's spall records."""
-    engine.spalls.append(SpallRecord(x=x, t=t, tension=tension, strength=strength,
-                                     layer=layer, zone=zone))
+    engine.spalls.append(solution.SpallRecord(x=x, t=t, tension=tension,
+                                              strength=strength, layer=layer, zone=zone))
