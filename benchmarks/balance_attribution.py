@@ -2,6 +2,7 @@
 by front and to the decision that made each front.
 
     PYTHONPATH=. python benchmarks/balance_attribution.py 349 [--momentum]
+    PYTHONPATH=. python benchmarks/balance_attribution.py --scene SCENE.toml [--momentum]
 
 Between two events every front is straight and every region constant, so the total
 energy per unit area changes at
@@ -50,6 +51,7 @@ from random_scenes import campaign_scene  # noqa: E402
 from fronttrack import coalesce, dropped, fragment, outgoing, ringing, zones  # noqa: E402
 from fronttrack import engine as engine_module  # noqa: E402
 from fronttrack.runner import run  # noqa: E402
+from fronttrack.scene_file import load_scene  # noqa: E402
 
 
 @dataclass(frozen=True)
@@ -214,16 +216,20 @@ class Attribution:
 
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("seed", type=int)
+    parser.add_argument("seed", type=int, nargs="?", help="a campaign seed")
+    parser.add_argument("--scene", help="a scene file (TOML) instead of a campaign seed")
     parser.add_argument("--fronts", type=int, default=8, help="largest fronts to list")
     parser.add_argument("--momentum", action="store_true",
                         help="attribute the momentum residual instead of the energy's")
     args = parser.parse_args()
+    if (args.seed is None) == (args.scene is None):
+        parser.error("give a campaign seed or --scene, not both")
     quantity = MOMENTUM if args.momentum else ENERGY
     attribution = Attribution(quantity)
     attribution.install()
     start = time.process_time()
-    solution = run(campaign_scene(args.seed, max_events=200_000))
+    solution = run(campaign_scene(args.seed, max_events=200_000) if args.scene is None
+                   else load_scene(args.scene))
     cpu = time.process_time() - start
     attribution.advance(solution.scene.t_end)  # the fronts alive at the end
     balance, conservation = solution.accuracy_report["balance"], solution.conservation()
@@ -236,7 +242,8 @@ def main() -> None:
         return {k: round(float(100.0 * v / scale), 3) for k, v in counter.most_common()
                 if abs(v) > 1e-6 * scale}
 
-    print(f"seed {args.seed}: {solution.stats['events']} events, {cpu:.1f} s CPU; momentum "
+    name = args.scene or f"seed {args.seed}"
+    print(f"{name}: {solution.stats['events']} events, {cpu:.1f} s CPU; momentum "
           f"{balance['momentum_error']:.3g}, energy {balance['energy_error']:.3g}, promise "
           f"{balance['promised']:.3g}")
     print(f"  fronts by the decision that made them (% of the {quantity.name} content):",

@@ -93,6 +93,14 @@ def neglect_cost(engine, material, group, x: float, left, right, t: float) -> fl
     return material.rho0 * abs(left.e - right.e) * sweep
 
 
+def span(front, t: float, limit: float) -> float:
+    """The distance (m) at ``t`` (s) between the nearest sites around the cell right of
+    ``front`` (a wave sweeping it cannot pass them without an event), at most ``limit``."""
+    x = front.position(t)
+    return min(_to_site(front, "prev", x, t, limit) + _to_site(front.next, "next", x, t, limit),
+               limit)
+
+
 def _to_site(front, step: str, x: float, t: float, limit: float) -> float:
     """The distance (m) from ``x`` to the first site from ``front`` on in direction
     ``step`` (a wave cannot pass a site without an event), at most ``limit``."""
@@ -123,19 +131,26 @@ def affordable(engine, cost: float, t: float, history: bool = False) -> bool:
     all such contacts neglected before it, to one budget for their sum
     (``Counters.history_cost``; a thermal one's cost is settled later: ``hold``)."""
     counters = engine.counters
-    spent = cost + (counters.history_cost if history else 0.0)
-    budget = engine.neglect_budget
-    if spent > budget.limit and t >= budget.refresh:
-        content = balance.live_content(engine, t)[1]
-        promise = balance.promised_balance(engine.resolution.report())
-        budget.limit = max(budget.limit, BUDGET * promise * content)
-        budget.refresh = t + REFRESH * engine.t_end
-    if spent > budget.limit:
+    if not within_budget(engine, cost + (counters.history_cost if history else 0.0), t):
         return False
     counters.neglect_cost += cost
     if history:
         counters.history_cost += cost
     return True
+
+
+def within_budget(engine, cost: float, t: float) -> bool:
+    """Whether ``cost`` (J/m^2) at time ``t`` (s) is within what one neglect may cost,
+    ``BUDGET`` of the promised balance times the energy content (measured again, at most
+    once per ``REFRESH`` of the run, when the cost exceeds the limit known); nothing is
+    counted."""
+    budget = engine.neglect_budget
+    if cost > budget.limit and t >= budget.refresh:
+        content = balance.live_content(engine, t)[1]
+        promise = balance.promised_balance(engine.resolution.report())
+        budget.limit = max(budget.limit, BUDGET * promise * content)
+        budget.refresh = t + REFRESH * engine.t_end
+    return cost <= budget.limit
 
 
 def hold(engine, carrier, heat: float, t: float, cost: float) -> None:
