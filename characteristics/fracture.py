@@ -15,6 +15,10 @@ travels, while near its vertex the level set spreads faster than sound
 threshold model therefore fractures a *zone*, continuously, out to where the level
 set slows to the sound speed (``|dT/dX| = 1/C``) on each side.  ``fracture_zone``
 returns the first point and the two ends of that zone.
+
+An end that is the last sample on its side (the level set still spreads faster than
+sound there, as far as the lattice saw it) is *open*: the field beyond was not solved
+yet, and a later lattice may find the level set going on (``fronttrack.spall``).
 """
 
 from __future__ import annotations
@@ -28,7 +32,9 @@ import numpy as np
 @dataclass(frozen=True)
 class FractureZone:
     """The first fracture ``(x, t)`` (m, s) and the zone the threshold fractures:
-    ``x_lo``/``x_hi`` (m) reached at ``t_lo``/``t_hi`` (s)."""
+    ``x_lo``/``x_hi`` (m) reached at ``t_lo``/``t_hi`` (s); ``slowness`` (s/m) the inverse
+    of the relief's sound speed; ``open_lo``/``open_hi``: that end is the last sample of
+    the level set, still faster than sound (the module docstring)."""
 
     x: float
     t: float
@@ -36,6 +42,9 @@ class FractureZone:
     t_lo: float
     x_hi: float
     t_hi: float
+    slowness: float = 0.0
+    open_lo: bool = False
+    open_hi: bool = False
 
     @property
     def width(self) -> float:
@@ -92,7 +101,8 @@ def fracture_zone(lattice, strength: float, speed: float,
     x_lo, t_lo = (x[lo], t[lo]) if lo < first else (x_f, t_f)
     x_hi, t_hi = (x[hi], t[hi]) if hi > first else (x_f, t_f)
     return FractureZone(x=x_f, t=t_f, x_lo=float(min(x_lo, x_f)), t_lo=float(t_lo),
-                        x_hi=float(max(x_hi, x_f)), t_hi=float(t_hi))
+                        x_hi=float(max(x_hi, x_f)), t_hi=float(t_hi), slowness=slowness,
+                        open_lo=lo == 0, open_hi=hi == x.size - 1)
 
 
 def _lower_envelope(x: np.ndarray, t: np.ndarray) -> tuple[np.ndarray, np.ndarray]:

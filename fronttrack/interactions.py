@@ -287,7 +287,8 @@ def fracture(engine, plan) -> None:
     The region there is cut in two and the two halves become the faces of a new gap;
     each face then reflects as a free surface.  A point on a front, or not in tension,
     is left alone; so is a point of a lattice's zone closer than the spall spacing to an
-    earlier plane of its layer (``spall.beside_plane``: counted as a suppressed spall).
+    earlier plane of its layer (``spall.beside_plane``: counted as a suppressed spall),
+    and a zone's open end that the zone has since grown past (``spall.outgrown``).
     """
     x, t = plan.x, plan.t
     x_tol = engine.resolution.x_tol
@@ -314,6 +315,8 @@ def fracture(engine, plan) -> None:
     if region is None or region.state.sigma >= 0.0 or not (
             x - before.position(t) > x_tol and after.position(t) - x > x_tol):
         return
+    if spall.outgrown(engine, plan, region.layer):
+        return  # the zone's end moved on (a later lattice extended the zone)
     if plan.zone is not None and spall.beside_plane(engine, x, region.layer):
         engine.counters.suppressed_spalls += 1
         engine.counters.suppressed_tension = max(engine.counters.suppressed_tension,
