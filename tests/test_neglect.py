@@ -156,11 +156,12 @@ def test_a_thermal_neglect_costs_what_its_carrier_lost_by_its_next_event():
 
 def test_a_contact_alone_may_cost_a_tenth_of_the_promise():
     """The symmetric Al 2024 impact (2 mm onto 4 mm at 500 m/s) at 16 rays per fan to
-    2.25 us: a ray overtaking a shock at 1.42 us, 2.05 mm, leaves a contact whose bound
-    is 187 J/m^2 (its carrier can cross the impactor), beyond a tenth of the promise
+    2.25 us: contacts born at 1.40 us, 2.16 mm and 1.42 us, 2.05 mm have bounds of 176
+    and 187 J/m^2 (their carriers can cross the impactor), beyond a tenth of the promise
     (2e-3 of the 696 kJ/m^2 content: 139 J/m^2), within a quarter (348 J/m^2).
-    Neglected, its carrier lost 171 J/m^2 (2.5e-4 of the content) and the run ended
-    at -3.7e-4; kept (``neglect.ALONE``), at -2.6e-5.  1e-4 lies between the two, with
+    Neglected, the second's carrier lost 171 J/m^2 (2.5e-4 of the content) and the run
+    ended at -3.7e-4; the first kept (``neglect.ALONE``), the second is not made, and
+    the run ends at -2.6e-5.  1e-4 lies between the two, with
     the rest of the run's neglects and the rays' discretisation (2.6e-5) inside it."""
     scene = Scene(layers=(Layer("Al2024", "2 mm", velocity="500 m/s"),
                           Layer("Al2024", "4 mm", bond="unbonded")),
