@@ -56,10 +56,11 @@ its bound of 187 (the limit at a quarter: 348 J/m^2).  A contact whose bound is 
 a tenth of the promise (139 J/m^2) is now kept: one is, at 1.40 us and 2.16 mm (bound
 176 J/m^2), and the contact of 1.42 us is then not made; that run takes 8 606
 events instead of 8 499 and ends at -1.75e-3 instead of -2.09e-3 (within its
-promise), and to 2.25 us at -2.6e-5 instead of -3.7e-4.  A budget for the sum of the contacts' realised costs
-growing linearly in time to half the promise by ``t_end`` (tried, not kept) keeps the
-fragment's contacts once the sum catches up: 22 099 events to 9.01 us instead of 4 486,
-and the default-accuracy run reached the event limit at 14.7 us.
+promise), and to 2.25 us at -2.6e-5 instead of -3.7e-4.  A budget for the sum of the
+contacts' realised costs growing linearly in time to half the promise by ``t_end``
+(tried, not kept) keeps the fragment's contacts once the sum catches up: 22 099 events
+to 9.01 us instead of 4 486, and the default-accuracy run reached the event limit at
+14.7 us.
 
 A contact whose yield stresses differ by more than the negligible stress though it
 reflects less (a plastic-strain contact of a finite-plastic solid reflects a fraction
