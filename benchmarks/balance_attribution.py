@@ -1,8 +1,16 @@
 """Which decisions lose (or make) a campaign scene's energy: the balance attributed front
 by front and to the decision that made each front.
 
-    PYTHONPATH=. python benchmarks/balance_attribution.py 349 [--momentum]
+    PYTHONPATH=. python benchmarks/balance_attribution.py 349 [--momentum] [--windows 8]
     PYTHONPATH=. python benchmarks/balance_attribution.py --scene SCENE.toml [--momentum]
+    PYTHONPATH=. python benchmarks/balance_attribution.py --al 18 [--rays 16]
+
+``--al T_US`` attributes the symmetric Al 2024 impact of ``benchmarks/run_length.py``
+(``symmetric_al``) run to ``T_US`` microseconds instead of a campaign seed, at default
+accuracy or at ``--rays`` characteristics per fan.  ``--windows N`` also splits the
+residual over N equal windows of simulated time (what the fronts made while the run was
+in each, and the changes at its events), to tell a loss that grows with the run's
+length from one made once.
 
 Between two events every front is straight and every region constant, so the total
 energy per unit area changes at
@@ -47,7 +55,9 @@ HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE.parent / "tests"))
 
 from random_scenes import campaign_scene  # noqa: E402
+from run_length import symmetric_al  # noqa: E402
 
+import fronttrack as ft  # noqa: E402
 from fronttrack import coalesce, dropped, fragment, outgoing, ringing, zones  # noqa: E402
 from fronttrack import engine as engine_module  # noqa: E402
 from fronttrack.runner import run  # noqa: E402
@@ -135,8 +145,9 @@ class Attribution:
     """Patches the engine to attribute a quantity's residual (``ENERGY`` by default) to
     fronts and decisions while a run goes."""
 
-    def __init__(self, quantity: Quantity = ENERGY):
-        self.quantity = quantity
+    def __init__(self, quantity: Quantity = ENERGY, window: float = 0.0):
+        self.quantity, self.window = quantity, window
+        self.by_window = collections.defaultdict(collections.Counter)
         self.by_tag, self.jumps = collections.Counter(), collections.Counter()
         self.by_front, self.info, self.tags = collections.Counter(), {}, {}
         self.decisions, self.rates, self.last_t, self.newest = [], {}, 0.0, 0
@@ -151,6 +162,7 @@ class Attribution:
             energy = rate * max(t - max(self.last_t, front.t0), 0.0)
             self.by_tag[tag] += energy
             self.by_front[front.id] += energy
+            self._book(t, tag, energy)
             self.info[front.id] = (front.kind.value, tag, front.t0, front.x0)
         self.last_t, self.decisions = t, []
 
@@ -162,8 +174,10 @@ class Attribution:
         process()
         rates = _rates(engine, self.quantity)
         tag = "+".join(sorted(set(self.decisions))) or "exact"
-        self.jumps[tag] += _live_total(engine, t, {i: r for i, (_, r) in rates.items()},
-                                       self.quantity) - before
+        change = _live_total(engine, t, {i: r for i, (_, r) in rates.items()},
+                             self.quantity) - before
+        self.jumps[tag] += change
+        self._book(t, "events", change)
         front, newest = engine.head, self.newest
         while front is not None:
             if front.id > newest:
@@ -172,6 +186,12 @@ class Attribution:
             front = front.next
         self.rates = rates
         self.power = _boundary_rate(engine, self.quantity)
+
+    def _book(self, t: float, key: str, amount: float) -> None:
+        """Add ``amount`` under ``key`` to the window of simulated time holding ``t`` (s)
+        (the interval since the previous event lies in it to within one event)."""
+        if self.window > 0.0:
+            self.by_window[int(t / self.window)][key] += amount
 
     def install(self) -> None:
         process, wave_fronts = engine_module.Engine._process, outgoing.wave_fronts
@@ -214,22 +234,37 @@ class Attribution:
         ringing.try_end = tagging(ringing.try_end, "ring-down")
 
 
+def _scene(args):
+    """The scene the command line names, and how to call it."""
+    if args.scene is not None:
+        return load_scene(args.scene), args.scene
+    if args.al is None:
+        return campaign_scene(args.seed, max_events=200_000), f"seed {args.seed}"
+    accuracy = ft.Accuracy() if args.rays is None else ft.Accuracy(rays_per_fan=args.rays)
+    rays = "default accuracy" if args.rays is None else f"{args.rays} rays"
+    return symmetric_al(args.al * 1e-6, accuracy), f"symmetric Al to {args.al:g} us, {rays}"
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("seed", type=int, nargs="?", help="a campaign seed")
     parser.add_argument("--scene", help="a scene file (TOML) instead of a campaign seed")
+    parser.add_argument("--al", type=float, help="the symmetric Al impact to T_US us")
+    parser.add_argument("--rays", type=int, help="characteristics per fan for --al")
+    parser.add_argument("--windows", type=int, default=0,
+                        help="split the residual over this many windows of time")
     parser.add_argument("--fronts", type=int, default=8, help="largest fronts to list")
     parser.add_argument("--momentum", action="store_true",
                         help="attribute the momentum residual instead of the energy's")
     args = parser.parse_args()
-    if (args.seed is None) == (args.scene is None):
-        parser.error("give a campaign seed or --scene, not both")
+    if sum(x is not None for x in (args.seed, args.scene, args.al)) != 1:
+        parser.error("give one of a campaign seed, --scene or --al")
+    scene, name = _scene(args)
     quantity = MOMENTUM if args.momentum else ENERGY
-    attribution = Attribution(quantity)
+    attribution = Attribution(quantity, scene.t_end / args.windows if args.windows else 0.0)
     attribution.install()
     start = time.process_time()
-    solution = run(campaign_scene(args.seed, max_events=200_000) if args.scene is None
-                   else load_scene(args.scene))
+    solution = run(scene)
     cpu = time.process_time() - start
     attribution.advance(solution.scene.t_end)  # the fronts alive at the end
     balance, conservation = solution.accuracy_report["balance"], solution.conservation()
@@ -242,7 +277,6 @@ def main() -> None:
         return {k: round(float(100.0 * v / scale), 3) for k, v in counter.most_common()
                 if abs(v) > 1e-6 * scale}
 
-    name = args.scene or f"seed {args.seed}"
     print(f"{name}: {solution.stats['events']} events, {cpu:.1f} s CPU; momentum "
           f"{balance['momentum_error']:.3g}, energy {balance['energy_error']:.3g}, promise "
           f"{balance['promised']:.3g}")
@@ -251,6 +285,9 @@ def main() -> None:
     print("  changes at events:", percent(attribution.jumps))
     total = sum(attribution.by_tag.values()) + sum(attribution.jumps.values())
     print(f"  attributed in all: {100.0 * total / scale:.4f} %")
+    for window, counter in sorted(attribution.by_window.items()):
+        print(f"  {window * attribution.window * 1e6:.3g}-"
+              f"{(window + 1) * attribution.window * 1e6:.3g} us:", percent(counter))
     for front_id, amount in sorted(attribution.by_front.items(),
                                    key=lambda item: -abs(item[1]))[:args.fronts]:
         kind, tag, t0, x0 = attribution.info[front_id]
