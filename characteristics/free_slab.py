@@ -118,6 +118,31 @@ class FreeSlab:
         offset = 0.0 if side == "left" else self.length
         return np.sort(self.t0 + (offset - xi) / self.c)
 
+    def face_displacement(self, side: str, t_from: float, t) -> np.ndarray:
+        """How far (m) the face has moved from ``t_from`` at times ``t`` (s), in closed
+        form whatever the span: ``u0 (t - t_from) + 2 (Q(xi_from) - Q(xi_t)) / (Z C)``,
+        ``Q`` the antiderivative of ``P`` (periodic, as ``P`` has zero mean) and ``xi``
+        the face's unfolded coordinate (``du = 2 P / Z`` and ``dxi = -C dt``)."""
+        t = np.asarray(t, dtype=float)
+        swept = self._antiderivative(self._face_xi(side, t_from)) - self._antiderivative(
+            self._face_xi(side, t))
+        return self.u0 * (t - t_from) + 2.0 * swept / (self.z * self.c)
+
+    @property
+    def face_wander(self) -> float:
+        """The most (m) a face's displacement departs from the mean motion ``u0 (t -
+        t_from)`` over any span: ``2 (max Q - min Q) / (Z C)``."""
+        q = self._antiderivative(self.breaks)
+        return 2.0 * float(np.max(q) - np.min(q)) / (self.z * self.c)
+
+    def _antiderivative(self, xi) -> np.ndarray:
+        """``Q(xi) = int_0^xi P`` (Pa m), ``xi`` taken mod ``2L``: piecewise linear."""
+        widths = np.diff(np.append(self.breaks, 2.0 * self.length))
+        done = np.concatenate([[0.0], np.cumsum(self.values * widths)])
+        xi = np.mod(np.asarray(xi, dtype=float), 2.0 * self.length)
+        k = np.searchsorted(self.breaks, xi, side="right") - 1
+        return done[k] + self.values[k] * (xi - self.breaks[k])
+
     def face_pieces(self, side: str, t_from: float, t_to: float):
         """``(starts, velocities)``: the face's velocity is ``velocities[k]`` (m/s) from
         ``starts[k]`` to the next start (s) within ``[t_from, t_to]``."""

@@ -386,19 +386,49 @@ def _at_energy(material, rest: State, e: float, u: float, scale: float) -> State
 
 
 # --- faces --------------------------------------------------------------------------
-def _side_pieces(engine, gap, side: str, t_from: float, t_to: float):
-    """``(starts, velocities)`` of the face on ``side`` of ``gap`` over ``[t_from,
-    t_to]``: a ring's face in closed form, any other face at its region's velocity."""
-    if side == "left":
-        region = gap.prev.region_right
-        face_side = "right"
-    else:
-        region = gap.region_right
-        face_side = "left"
+MAX_FACE_CHANGES = 100_000
+"""A gap's closing is sought over windows of time in which a ringing face changes its
+velocity at most about this many times (a thin fragment rings ``1e5`` periods in a long
+run: listing every change at once would take gigabytes)."""
+
+
+def _face_ring(engine, gap, side: str, candidate=None):
+    """``(slab, face, velocity)`` of the face on ``side`` of ``gap``: a ring's slab and
+    its face (``"left"``/``"right"``) in closed form, else ``None`` and the velocity
+    (m/s) of the region there.  ``candidate``: ``(side, slab)`` taken as ringing."""
+    face = "right" if side == "left" else "left"
+    if candidate is not None and candidate[0] == side:
+        return candidate[1], face, None
+    region = gap.prev.region_right if side == "left" else gap.region_right
     ring = engine.free_rings.by_region.get(region.id)
     if ring is None:
-        return np.array([t_from]), np.array([region.state.u])
-    return ring.slab.face_pieces(face_side, t_from, t_to)
+        return None, face, region.state.u
+    return ring.slab, face, None
+
+
+def _pieces(face_ring, t_from: float, t_to: float):
+    """``(starts, velocities)`` of a face over ``[t_from, t_to]`` (``_face_ring``)."""
+    slab, face, u = face_ring
+    if slab is None:
+        return np.array([t_from]), np.array([u])
+    return slab.face_pieces(face, t_from, t_to)
+
+
+def _moved(face_ring, t_from: float, t: float) -> float:
+    """How far (m) a face moved from ``t_from`` to ``t`` (s)."""
+    slab, face, u = face_ring
+    if slab is None:
+        return u * (t - t_from)
+    return float(slab.face_displacement(face, t_from, t))
+
+
+def _mean_motion(face_ring) -> tuple[float, float]:
+    """``(velocity, wander)``: a face's mean velocity (m/s) and the most (m) its
+    displacement departs from it over any span."""
+    slab, _, u = face_ring
+    if slab is None:
+        return u, 0.0
+    return slab.u0, slab.face_wander
 
 
 def _displacement(starts, velocities, t_to: float, times) -> np.ndarray:
@@ -427,8 +457,9 @@ def far_face(engine, gap, side: str, t: float) -> tuple[float, float]:
     if ring is None:
         return far.state.u, math.inf
     advance_gap(engine, gap, t)
+    # a face that keeps its velocity for a whole period keeps it for ever
     starts, velocities = ring.slab.face_pieces("right" if side == "left" else "left", t,
-                                               engine.t_end)
+                                               min(engine.t_end, t + ring.slab.period))
     return float(velocities[0]), float(starts[1]) if starts.size > 1 else math.inf
 
 
@@ -441,40 +472,50 @@ def advance_gap(engine, gap, t: float) -> None:
         opening = gap.region_right.state.u - gap.prev.region_right.state.u
         gap.gap_width += opening * (t - gap.gap_time)
     else:
-        now = np.array([t])
-        lo = _displacement(*_side_pieces(engine, gap, "left", gap.gap_time, t), t, now)
-        hi = _displacement(*_side_pieces(engine, gap, "right", gap.gap_time, t), t, now)
-        gap.gap_width += float(hi[0] - lo[0])
+        gap.gap_width += (_moved(_face_ring(engine, gap, "right"), gap.gap_time, t)
+                          - _moved(_face_ring(engine, gap, "left"), gap.gap_time, t))
     gap.gap_time = t
 
 
 def closure_time(engine, gap, candidate=None) -> float:
     """The first time (s, at most ``t_end``; ``inf`` if none) the faces of ``gap``, one
     of them a ring's, meet.  ``candidate``: ``(side, slab)``, a fragment on that side
-    of the gap taken as ringing by ``slab``."""
-    t_from, t_to = gap.gap_time, engine.t_end
-    if t_to <= t_from:
-        return math.inf
-    pieces = {}
-    for side in ("left", "right"):
-        if candidate is not None and candidate[0] == side:
-            face = "right" if side == "left" else "left"
-            pieces[side] = candidate[1].face_pieces(face, t_from, t_to)
-        else:
-            pieces[side] = _side_pieces(engine, gap, side, t_from, t_to)
-    lo, hi = pieces["left"], pieces["right"]
-    times = np.unique(np.concatenate([lo[0], hi[0], [t_to]]))
-    width = gap.gap_width + (_displacement(*hi, t_to, times)
-                             - _displacement(*lo, t_to, times))
-    closed = np.nonzero(width <= 0.0)[0]
-    if closed.size == 0:
-        return math.inf
-    k = int(closed[0])
-    if k == 0:
-        return t_from
-    # linear between times[k-1] (open) and times[k] (closed)
-    w0, w1 = width[k - 1], width[k]
-    return float(times[k - 1] + (times[k] - times[k - 1]) * w0 / (w0 - w1))
+    of the gap taken as ringing by ``slab``.
+
+    The faces' velocities are piecewise constant: the width is followed exactly over
+    windows of at most ``MAX_FACE_CHANGES`` changes.  After each, the faces' mean
+    motions bound it from below (``width - wander_left - wander_right + (u_right -
+    u_left) (t - t_b)``): a gap that this bound keeps open never closes, and no closing
+    comes before the bound reaches zero, so the search skips to there."""
+    faces = [_face_ring(engine, gap, side, candidate) for side in ("left", "right")]
+    t_a, t_end, width = gap.gap_time, engine.t_end, gap.gap_width
+    window = t_end - t_a
+    for slab, _, _ in faces:
+        if slab is not None:
+            window = min(window, max(1.0, MAX_FACE_CHANGES / slab.breaks.size) * slab.period)
+    (u_lo, wander_lo), (u_hi, wander_hi) = (_mean_motion(face) for face in faces)
+    while t_a < t_end:
+        t_b = min(t_end, t_a + window)
+        lo, hi = (_pieces(face, t_a, t_b) for face in faces)
+        times = np.unique(np.concatenate([lo[0], hi[0], [t_b]]))
+        widths = width + _displacement(*hi, t_b, times) - _displacement(*lo, t_b, times)
+        closed = np.nonzero(widths <= 0.0)[0]
+        if closed.size:
+            k = int(closed[0])
+            if k == 0:
+                return t_a
+            # linear between times[k-1] (open) and times[k] (closed)
+            w0, w1 = widths[k - 1], widths[k]
+            return float(times[k - 1] + (times[k] - times[k - 1]) * w0 / (w0 - w1))
+        t_a, width = t_b, float(widths[-1])
+        margin = width - wander_lo - wander_hi
+        if margin > 0.0:
+            if u_hi >= u_lo:
+                return math.inf
+            t_skip = min(t_end, t_a + margin / (u_lo - u_hi))
+            width += _moved(faces[1], t_a, t_skip) - _moved(faces[0], t_a, t_skip)
+            t_a = t_skip
+    return math.inf
 
 
 def _lifetime(engine, slab: FreeSlab, left, right, t: float) -> float:

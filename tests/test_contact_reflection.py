@@ -128,13 +128,16 @@ def test_a_strength_stack_without_its_weak_contacts_keeps_its_records():
 
 def test_contacts_with_plastic_history_share_one_budget():
     """A neglected contact that carries plastic history is held, with all such contacts
-    before it, to one budget for the sum of their costs; any other contact only to the
-    budget for itself (``fronttrack.neglect.affordable``)."""
+    before it, to one budget for the sum of their costs; any contact alone to
+    ``ALONE / BUDGET`` of it, 10 J/m^2 of 25 here (``fronttrack.neglect.affordable``)."""
     engine = SimpleNamespace(counters=Counters(),
-                             neglect_budget=neglect.NeglectBudget(limit=10.0, refresh=math.inf))
-    assert neglect.affordable(engine, 6.0, 0.0, history=True)
-    assert not neglect.affordable(engine, 6.0, 0.0, history=True)   # 12 J/m^2 > 10
-    assert neglect.affordable(engine, 6.0, 0.0)                     # on its own: 6 <= 10
-    assert neglect.affordable(engine, 4.0, 0.0, history=True)       # 6 + 4 <= 10
-    assert engine.counters.history_cost == 10.0
-    assert engine.counters.neglect_cost == 16.0
+                             neglect_budget=neglect.NeglectBudget(limit=25.0, refresh=math.inf))
+    assert neglect.ALONE / neglect.BUDGET == pytest.approx(0.4)
+    assert neglect.affordable(engine, 8.0, 0.0, history=True)
+    assert not neglect.affordable(engine, 11.0, 0.0)                # alone: 11 > 10
+    assert neglect.affordable(engine, 9.0, 0.0, history=True)       # 8 + 9 <= 25
+    assert not neglect.affordable(engine, 9.0, 0.0, history=True)   # 26 J/m^2 > 25
+    assert neglect.affordable(engine, 9.0, 0.0)                     # on its own: 9 <= 10
+    assert neglect.affordable(engine, 8.0, 0.0, history=True)       # 17 + 8 <= 25
+    assert engine.counters.history_cost == 25.0
+    assert engine.counters.neglect_cost == 34.0

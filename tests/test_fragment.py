@@ -109,3 +109,59 @@ def test_refused_when_waves_too_strong_for_the_tolerance(velocity, accuracy):
     # over a period; 20 m/s at the default resolution length (2.5 um) likewise
     solution = ft.run(_plate(velocity, "2 us", **accuracy))
     assert solution.accuracy_report["fragments_ringing"] == []
+
+
+def _thin_ring_gap(closing: float, width: float):
+    """A 10 um fragment ringing (16 jumps of P, period 4 ns) left of a gap of ``width``
+    (m), a region right of it moving ``closing`` (m/s) slower than the fragment's mean
+    velocity, run to 1 ms: 250 000 periods, four million face changes."""
+    from types import SimpleNamespace
+
+    from characteristics.free_slab import FreeSlab
+
+    rng = np.random.default_rng(7)
+    edges = np.linspace(0.0, 10e-6, 9)
+    slab = FreeSlab.from_cells(edges, rng.normal(0.0, 5e7, 8), 10.0 + rng.normal(0.0, 2.0, 8),
+                               0.0, 5000.0, 4e7)
+    engine = SimpleNamespace(t_end=1e-3, free_rings=SimpleNamespace(by_region={}))
+    far = SimpleNamespace(id=2, state=SimpleNamespace(u=slab.u0 - closing))
+    gap = SimpleNamespace(prev=SimpleNamespace(region_right=SimpleNamespace(id=1)),
+                          region_right=far, gap_time=1e-7, gap_width=width)
+    return engine, gap, slab
+
+
+def test_gap_closure_over_many_periods_is_found_window_by_window(monkeypatch):
+    """A thin fragment closing its gap after 120 000 of its periods: the closing is found
+    exactly (the width, in closed form, is zero there and positive a moment before),
+    without listing the faces' changes over the whole run at once (which took 3.3 GB in
+    a random stack), and a gap the mean motions keep open is open for ever."""
+    from characteristics.free_slab import FreeSlab
+
+    listed = []
+    changes = FreeSlab.face_changes
+
+    def counted(self, side, t_from, t_to):
+        out = changes(self, side, t_from, t_to)
+        listed.append(out.size)
+        return out
+
+    monkeypatch.setattr(FreeSlab, "face_changes", counted)
+    engine, gap, slab = _thin_ring_gap(closing=0.1, width=50e-6)
+    t = fragment.closure_time(engine, gap, ("left", slab))
+    assert max(listed) <= 2 * fragment.MAX_FACE_CHANGES
+    u_far = gap.region_right.state.u
+
+    def width(at):
+        return (gap.gap_width + u_far * (at - gap.gap_time)
+                - slab.face_displacement("right", gap.gap_time, at))
+
+    # closes within (w -+ wander) / closing, after ~120 000 periods
+    lo = gap.gap_time + (50e-6 - 2 * slab.face_wander) / 0.1
+    hi = gap.gap_time + (50e-6 + 2 * slab.face_wander) / 0.1
+    assert lo <= t <= hi and t / slab.period > 1e5
+    # zero to the rounding of displacements of 5 mm summed over the run
+    assert abs(float(width(t))) < 1e-15
+    before = np.linspace(t - 3 * slab.period, t, 3001)[:-1]
+    assert np.all(width(before) > 0.0)
+    engine, gap, slab = _thin_ring_gap(closing=-2.0, width=1e-6)
+    assert fragment.closure_time(engine, gap, ("left", slab)) == np.inf

@@ -152,3 +152,19 @@ def test_a_thermal_neglect_costs_what_its_carrier_lost_by_its_next_event():
     assert neglect.affordable(engine, 58.0, 5e-6, history=True)
     neglect.hold(engine, None, 264e3, 5e-6, 58.0)
     assert engine.counters.history_cost == pytest.approx(58.0 + 4.2768, rel=1e-9)
+
+
+def test_a_contact_alone_may_cost_a_tenth_of_the_promise():
+    """The symmetric Al 2024 impact (2 mm onto 4 mm at 500 m/s) at 16 rays per fan to
+    2.25 us: a ray overtaking a shock at 1.42 us, 2.05 mm, leaves a contact whose bound
+    is 187 J/m^2 (its carrier can cross the impactor), beyond a tenth of the promise
+    (2e-3 of the 696 kJ/m^2 content: 139 J/m^2), within a quarter (348 J/m^2).
+    Neglected, its carrier lost 171 J/m^2 (2.5e-4 of the content) and the run ended
+    at -3.7e-4; kept (``neglect.ALONE``), at -2.6e-5.  1e-4 lies between the two, with
+    the rest of the run's neglects and the rays' discretisation (2.6e-5) inside it."""
+    scene = Scene(layers=(Layer("Al2024", "2 mm", velocity="500 m/s"),
+                          Layer("Al2024", "4 mm", bond="unbonded")),
+                  t_end=2.25e-6, accuracy=Accuracy(rays_per_fan=16))
+    balance = run(scene).accuracy_report["balance"]
+    assert balance["promised"] == pytest.approx(2e-3)
+    assert abs(balance["energy_error"]) < 1e-4
