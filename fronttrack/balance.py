@@ -104,10 +104,17 @@ def warnings(report: dict, entry: dict) -> list[str]:
 
 
 def _hint(report: dict) -> str:
+    """The settings that most likely explain a balance beyond its promise: neglected
+    entropy contacts if any; else the fans' finite characteristic steps (a
+    characteristic's jump misses the Rankine-Hugoniot energy by a third-order defect,
+    and a lattice's cells lie on one isentrope table within its tolerance) and any waves
+    dropped below the negligible stress."""
     if report.get("neglected_contact_energy", 0.0) > 0.0:
         return " (entropy contacts were neglected: set accuracy.entropy_contacts = true)"
     if report.get("dropped_waves", 0):
         return (f" ({report['dropped_waves']} waves below the negligible stress "
-                f"{report['negligible_stress']:.3g} Pa were dropped: lower "
-                "accuracy.negligible_stress)")
-    return ""
+                f"{report['negligible_stress']:.3g} Pa were dropped, and fans are cut into "
+                "characteristics of finite step: lower accuracy.negligible_stress or raise "
+                "accuracy.rays_per_fan)")
+    return (" (fans are cut into characteristics of finite step: raise "
+            "accuracy.rays_per_fan)")

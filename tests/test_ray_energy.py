@@ -287,3 +287,17 @@ def test_a_zone_leaves_out_a_colder_isentrope_whose_sweep_would_create_energy():
     balance = run(scene).accuracy_report["balance"]
     assert balance["energy_error"] <= 0.0  # nothing created
     assert -balance["energy_error"] <= balance["promised"]
+
+
+def test_a_balance_beyond_its_promise_names_the_fans_step_as_well():
+    """Energy made by coarse fans (a characteristic's third-order defect, cells on a
+    nearby isentrope table) is not the dropped waves' doing alone: the warning names
+    both settings, and without dropped waves the fans' step only."""
+    from fronttrack import balance
+
+    entry = {"momentum_error": 0.0, "energy_error": 0.0076, "promised": 0.002}
+    dropped = balance.warnings({"dropped_waves": 40, "negligible_stress": 1.97e5}, entry)
+    assert len(dropped) == 1 and "energy created: 0.0076" in dropped[0]
+    assert "accuracy.negligible_stress" in dropped[0] and "accuracy.rays_per_fan" in dropped[0]
+    (none,) = balance.warnings({"dropped_waves": 0, "negligible_stress": 1.97e5}, entry)
+    assert "accuracy.rays_per_fan" in none and "negligible_stress" not in none
