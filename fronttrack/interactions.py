@@ -325,6 +325,8 @@ def fracture(engine, plan) -> None:
     each face then reflects as a free surface.  A point on a front, or not in tension,
     is left alone; so is a point of a lattice's zone closer than the spall spacing to an
     earlier plane of its layer (``spall.beside_plane``: counted as a suppressed spall).
+    A point at the face of a wall or bonded piston tears the face off
+    (``_fracture_face``).
     """
     x, t = plan.x, plan.t
     x_tol = engine.resolution.x_tol
