@@ -259,7 +259,9 @@ def _fracture_zone(zone: Zone, lattice: Lattice):
         speed = zone.table.speed_at_stress(-strength)
     except StateOutOfRangeError:
         speed = float(np.max(np.abs(zone.speed))) if zone.speed.size else 1.0
-    return fracture_zone(lattice, strength, speed, zone.carried)
+    faces = [end.x for end in (zone.left, zone.right)
+             if isinstance(end, Reflector) and end.holds == "velocity"]
+    return fracture_zone(lattice, strength, speed, zone.carried, faces)
 
 
 def _meet(x0a: float, t0a: float, sa: float, x0b: float, t0b: float, sb: float) -> float:

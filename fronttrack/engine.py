@@ -99,6 +99,7 @@ class Engine:
         self.spalls: list = []
         self.fracture_zones: list = []
         self.planned_fractures: list[float] = []
+        self.torn_faces: set[int] = set()  # ids of held boundary faces torn off (spall)
         self.min_stress: tuple[float, float, float] | None = None
         self.t_end = scene.t_end
         self.initial_states = [initial_state(layer, f"layer[{k}]")

@@ -144,21 +144,58 @@ def _boundary(engine, site, region_left, region_right, t, incoming, timer):
     kind = EventKind.REFLECTION if incoming else EventKind.BOUNDARY
     if spec.kind in (BoundaryKind.FREE, BoundaryKind.STRESS):
         return _traction(engine, site, region, value, t, kind)
-    if spec.kind == BoundaryKind.VELOCITY and spec.bond != "bonded" \
-            or site.piston_velocity is not None:
+    if pushes_only(engine, site, spec) or site.piston_velocity is not None:
         return _piston(engine, site, region, value, t, kind)
     try:
-        return kind, solve_boundary(region.material, region.state, site.side,
-                                    velocity=value, release=release)
+        sol = solve_boundary(region.material, region.state, site.side, velocity=value,
+                             release=release)
     except NoSolutionError:
         if not _pulls(region, site.side, value, release):
             raise
+    else:
+        tension = -(sol.right_star if site.side == "left" else sol.left_star).sigma
+        strength = contact_strength(engine, None, region.material)
+        if tension <= strength:
+            return kind, sol
+        # the material at the face, pulled beyond its spall strength, tears off
+        tear_face(engine, site, region, t, tension, strength)
+        return _piston(engine, site, region, value, t, kind)
     # a wall or bonded piston pulling beyond the most tension the equation of state
     # carries: the material cavitates at the face, which comes free of the boundary
     engine.counters.cavitations += 1
     limit = _most_tension(region, site.side, release)
     spall.record(engine, site.x0, t, limit, limit, region.layer)
     return _piston(engine, site, region, value, t, kind)
+
+
+def pushes_only(engine, site, spec) -> bool:
+    """Whether a velocity boundary (``spec``: its scene entry) pushes its face but
+    cannot pull it: an unbonded piston, or a wall or bonded piston whose face was torn
+    off (``tear_face``)."""
+    return (spec.kind == BoundaryKind.VELOCITY and spec.bond != "bonded"
+            or site.id in engine.torn_faces)
+
+
+def tear_face(engine, site, region, t: float, tension: float, strength: float,
+              zone=None) -> None:
+    """Record the fracture of the material at the face of a wall or bonded piston
+    (``site``; ``region`` the cell at it) at ``t`` (s) under ``tension`` (Pa) beyond
+    ``strength`` (Pa): the face comes free of the boundary (a gap opens between them,
+    ``_piston``) and is held by it in compression only from then on (``pushes_only``)."""
+    engine.torn_faces.add(site.id)
+    spall.record(engine, site.x0, t, tension, strength, region.layer, zone)
+
+
+def _fracture_face(engine, site, plan) -> None:
+    """A fracture planned at the face of a wall or bonded piston (a lattice's zone
+    reaching it, ``characteristics.fracture``): the face tears off (``tear_face``) and
+    comes free at once; a face not in tension is left alone."""
+    region = site.region_right if site.side == "left" else site.prev.region_right
+    if region is None or region.state.sigma >= 0.0:
+        return
+    tension = plan.tension if plan.tension is not None else -region.state.sigma
+    tear_face(engine, site, region, plan.t, tension, plan.strength, plan.zone)
+    engine._process([site], plan.t, site.x0, timer=False)
 
 
 def _most_tension(region, side: str, release: str) -> float:
@@ -289,12 +326,20 @@ def fracture(engine, plan) -> None:
     is left alone; so is a point of a lattice's zone closer than the spall spacing to an
     earlier plane of its layer (``spall.beside_plane``: counted as a suppressed spall),
     and a zone's open end that the zone has since grown past (``spall.outgrown``).
+    A point at the face of a wall or bonded piston tears the face off
+    (``_fracture_face``).
     """
     x, t = plan.x, plan.t
     x_tol = engine.resolution.x_tol
     before = engine.head
     while before.next is not None and before.next.position(t) <= x:
         before = before.next
+    if before.kind == FrontKind.BOUNDARY and abs(before.position(t) - x) <= x_tol:
+        spec = engine.scene.left if before.side == "left" else engine.scene.right
+        if spec.kind in (BoundaryKind.WALL, BoundaryKind.VELOCITY) and not pushes_only(
+                engine, before, spec):
+            _fracture_face(engine, before, plan)
+        return
     after = before.next
     if after is None:
         return

@@ -351,7 +351,7 @@ def _end(engine, front: Front, side: str, t: float, table):
     the end stays as it is."""
     if front.kind == FrontKind.BOUNDARY:
         spec = engine.scene.left if front.side == "left" else engine.scene.right
-        if spec.kind == BoundaryKind.VELOCITY and spec.bond != "bonded":
+        if interactions.pushes_only(engine, front, spec):
             # a piston may separate from its face: each reflection there is an event that
             # checks for it (``interactions._piston``)
             return moc.Bound(front.x0, front.t0, 0.0), math.inf
