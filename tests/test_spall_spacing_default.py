@@ -34,18 +34,22 @@ def _plate_impact(**accuracy) -> Scene:
 
 
 def test_no_fragment_below_the_resolution_length():
-    """The bonded Al 2024 plate: the zone's second end (0.5 um from its first point)
-    is not made a plane; the run stays cheap."""
+    """The bonded Al 2024 plate: no plane closer than the resolution to another (a zone
+    0.5 um wide made one plane at each end before); the run stays cheap."""
     al = get("Al2024")
     scene = Scene(layers=(Layer(al, 1e-3, 300.0), Layer(al, 2e-3)), t_end=1e-6,
                   accuracy=Accuracy(max_events=1000))
     solution = run(scene)  # EventLimitError before the default spacing (2 558 events)
     report = solution.accuracy_report
-    assert solution.stats["events"] < 400  # 277
+    # 546 (277 before neglect.ALONE kept the contacts whose cost alone exceeds a tenth
+    # of the promise: to 2 us 3 982 events within the promise, against 706 beyond it)
+    assert solution.stats["events"] < 800
     assert [round(s.x * 1e3, 3) for s in solution.spalls] == [1.966, 2.942, 2.127]
+    # the zone there: 2.1269-2.1274 mm before ALONE, one point now; either way one plane
     zone = report["fracture_zones"][-1]
-    assert abs(zone["x_lo"] - 2.1269e-3) < 1e-7 and abs(zone["x_hi"] - 2.1274e-3) < 1e-7
-    assert report["suppressed_spalls"] == 1
+    assert abs(zone["x_lo"] - 2.1269e-3) < 1e-7
+    assert zone["x_hi"] - zone["x_lo"] < report["coalesce_length"]
+    assert report["suppressed_spalls"] >= 1  # 7
     assert _closest(solution.spalls, 1) >= report["coalesce_length"]
     balance = report["balance"]
     assert balance["energy_error"] < 1e-12  # -1.0e-3: waves neglected, none created
