@@ -166,10 +166,6 @@ class Isentrope(ABC):
         """Lagrangian sound speed (m/s) of the state with these invariants."""
         return self.point_at_volume(self.volume_at_phi(0.5 * (j_plus - j_minus)))[2]
 
-    def energy_at_stress(self, sigma: float) -> float:
-        """Specific internal energy (J/kg) at stress ``sigma`` (Pa) on this isentrope."""
-        return self.point_at_volume(self.volume_at_phi(self.phi_at_stress(sigma)))[1]
-
     def speed_at_stress(self, sigma: float) -> float:
         """Lagrangian sound speed (m/s) at stress ``sigma`` on this isentrope."""
         return self.point_at_volume(self.volume_at_phi(self.phi_at_stress(sigma)))[2]

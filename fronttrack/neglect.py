@@ -114,14 +114,6 @@ def neglect_cost(engine, material, group, x: float, left, right, t: float) -> fl
     return material.rho0 * abs(left.e - right.e) * sweep
 
 
-def span(front, t: float, limit: float) -> float:
-    """The distance (m) at ``t`` (s) between the nearest sites around the cell right of
-    ``front`` (a wave sweeping it cannot pass them without an event), at most ``limit``."""
-    x = front.position(t)
-    return min(_to_site(front, "prev", x, t, limit) + _to_site(front.next, "next", x, t, limit),
-               limit)
-
-
 def _to_site(front, step: str, x: float, t: float, limit: float) -> float:
     """The distance (m) from ``x`` to the first site from ``front`` on in direction
     ``step`` (a wave cannot pass a site without an event), at most ``limit``."""

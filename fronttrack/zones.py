@@ -32,7 +32,7 @@ import numpy as np
 from characteristics import lattice as moc
 from materials import State
 
-from . import fragment, interactions, neglect, spall
+from . import fragment, interactions, spall
 from .fronts import MIXED, Front, Region
 from .kinds import BoundaryKind, EventKind, FrontKind
 from .patch import LatticePatch
@@ -66,10 +66,10 @@ def try_zone(engine, group: list[Front], t: float) -> bool:
     """Solve the event of ``group`` at ``t`` as part of a lattice; False if it is not one."""
     if not engine.resolution.makes_fans:
         return False  # no isentrope tables: no ray carries an invariant (``_eligible``)
-    table = _eligible(engine, group, t)
+    table = _eligible(engine, group)
     if table is None:
         return False
-    run = _collect(engine, group, table, t)
+    run = _collect(engine, group, table)
     if sum(1 for f in run.slots if f.kind == FrontKind.RAY) < MIN_ZONE_RAYS:
         return False  # a few rays: one Riemann solve each costs less than a lattice
     if not all(table.covers(c.state.sigma) for c in run.cells):
@@ -90,20 +90,20 @@ def try_zone(engine, group: list[Front], t: float) -> bool:
     return True
 
 
-def _eligible(engine, group: list[Front], t: float):
+def _eligible(engine, group: list[Front]):
     """The common isentrope of an event of rays meeting each other or a site the method
-    of characteristics handles at ``t`` (s); ``None`` otherwise."""
+    of characteristics handles; ``None`` otherwise."""
     rays = [f for f in group if f.kind == FrontKind.RAY]
     sites = [f for f in group if f.is_site]
     if not rays or len(rays) + len(sites) != len(group) or len(sites) > 1:
         return None
     if any(math.isnan(f.invariant) for f in rays):
         return None
-    if sites and not _handles(engine, sites[0], group, t):
+    if sites and not _handles(engine, sites[0], group):
         return None
-    cells = {id(f.region_right): f for f in _ray_cells(rays)}
-    table = engine.table_of(next(iter(cells.values())).region_right)
-    if table is None or not all(_takes(engine, f, table, t) for f in cells.values()):
+    cells = {id(c): c for c in _ray_cells(rays)}
+    table = engine.table_of(next(iter(cells.values())))
+    if table is None or not all(_on(engine, c, table) for c in cells.values()):
         return None
     return table
 
@@ -129,59 +129,23 @@ def _on(engine, region: Region | None, table) -> bool:
             and table.covers(region.state.sigma))
 
 
-def _takes(engine, front: Front | None, table, t: float) -> bool:
-    """Whether a zone on ``table`` at ``t`` (s) takes the cell right of ``front``: it lies
-    on the table (``_on``), and the energy the zone may make or lose with it is within
-    what one neglected entropy contact may cost (``neglect.within_budget``).
-
-    The cells a lattice's nodes make lie on its table, so a ray running from a cell of
-    another isentrope into the table's state makes ``rho0 |U| (e_table - e_own)`` (W/m^2,
-    the two isentropes' energies at the cell's stress) while it sweeps that material,
-    and a ray leaving the lattice between the two carries the jump on.  Either sweeps at
-    most the material between the sites around the cell (a wave cannot pass a site
-    without an event) and what the scene's signal speed reaches by the end, as a
-    neglected contact's wave does (``neglect.neglect_cost``).  A stress gap within the
-    tables' tolerance can be a large energy where the stresses are small against the
-    bulk modulus: in 3 mm of LiF at 100 m/s onto a wall (``rho0 Gamma0`` 4.5 kPa per
-    J/kg) a cell 44.6 J/kg below a zone's table, 193 kPa at equal volume against a
-    tolerance of 197 kPa, filled 2.7 mm, and the lattice created 0.81 % of the scene's
-    energy sweeping it (promise 0.2 %); bounded by the cell's own width instead, cells
-    of 20-40 um each passed, and a ray the lattice left between them and the colder
-    material swept 2.7 mm of it (+0.84 %).  Both signs are bounded, as a neglect's are:
-    bounding creation alone let the zone form on the colder table and cool the hotter
-    cells (3 mm of PMMA at 100 m/s onto a wall: -0.12 % became -0.43 %, promise 0.2 %).
-    A cell on the zone's own table costs nothing here: an offset the ray-energy shift
-    put it at is given back alike (``_on``)."""
-    region = None if front is None else front.region_right
-    if not _on(engine, region, table):
-        return False
-    own = engine.table_of(region)
-    if own is table:
-        return True
-    sigma = region.state.sigma
-    heat = region.material.rho0 * abs(table.energy_at_stress(sigma)
-                                      - own.energy_at_stress(sigma))
-    sweep = neglect.span(front, t, engine.signal_speed * max(engine.t_end - t, 0.0))
-    return neglect.within_budget(engine, heat * sweep, t)
-
-
-def _ray_cells(rays: list[Front]) -> list[Front]:
-    """The fronts whose right cells are the cells on both sides of each ray."""
+def _ray_cells(rays: list[Front]) -> list[Region]:
+    """The cells on both sides of each ray."""
     cells = []
     for ray in rays:
-        cells.append(ray)
+        cells.append(ray.region_right)
         if ray.prev is not None:
-            cells.append(ray.prev)
+            cells.append(ray.prev.region_right)
     return cells
 
 
-def _handles(engine, site: Front, group: list[Front], t: float) -> bool:
+def _handles(engine, site: Front, group: list[Front]) -> bool:
     """A site at which the lattice takes the rays: a boundary of the stack (rays arriving
     at it), a gap, a contact that the isentrope crosses (``_passes``), or a contact to
     another isentrope table (a join: the rays arrive from one side)."""
     if site.kind == FrontKind.BOUNDARY:
         return (site is group[-1]) if site.side == "right" else (site is group[0])
-    if site.kind == FrontKind.GAP or _passes(engine, site, t):
+    if site.kind == FrontKind.GAP or _passes(engine, site):
         return True
     if site.kind not in (FrontKind.INTERFACE, FrontKind.CONTACT):
         return False
@@ -192,25 +156,24 @@ def _handles(engine, site: Front, group: list[Front], t: float) -> bool:
     return far is not None and engine.table_of(far) is not None
 
 
-def _passes(engine, site: Front, t: float) -> bool:
-    """An interface or contact whose two sides lie on one isentrope at ``t`` (s): rays
-    cross it (``_takes``)."""
+def _passes(engine, site: Front) -> bool:
+    """An interface or contact whose two sides lie on one isentrope (rays cross it)."""
     if site.kind not in (FrontKind.INTERFACE, FrontKind.CONTACT) or site.prev is None:
         return False
-    left = site.prev.region_right
+    left, right = site.prev.region_right, site.region_right
     table = engine.table_of(left) if left is not None else None
-    return table is not None and _takes(engine, site, table, t)
+    return table is not None and _on(engine, right, table)
 
 
-def _collect(engine, group: list[Front], table, t: float) -> _Run:
-    """The maximal run of rays and sites on ``table`` around the group at ``t`` (s)."""
-    slots = [f for f in group if f.kind == FrontKind.RAY or _inside(engine, f, table, t)]
+def _collect(engine, group: list[Front], table) -> _Run:
+    """The maximal run of rays and sites on ``table`` around the group."""
+    slots = [f for f in group if f.kind == FrontKind.RAY or _inside(engine, f, table)]
     left = slots[0].prev
-    while left is not None and _joins(engine, left, table, "left", t):
+    while left is not None and _joins(engine, left, table, "left"):
         slots.insert(0, left)
         left = left.prev
     right = slots[-1].next
-    while right is not None and _joins(engine, right, table, "right", t):
+    while right is not None and _joins(engine, right, table, "right"):
         slots.append(right)
         right = right.next
     cells = [slots[0].prev.region_right] + [f.region_right for f in slots]
@@ -218,23 +181,24 @@ def _collect(engine, group: list[Front], table, t: float) -> _Run:
                 table=table)
 
 
-def _inside(engine, front: Front, table, t: float) -> bool:
-    """A site that can sit inside a zone on ``table`` at ``t`` (s): a contact the
-    isentrope crosses, or a gap with both faces on it (``_takes``)."""
+def _inside(engine, front: Front, table) -> bool:
+    """A site that can sit inside a zone on ``table``: a contact the isentrope crosses,
+    or a gap with both faces on it."""
     if front.kind == FrontKind.GAP:
         return (front.prev is not None and front.region_right is not None
-                and _takes(engine, front.prev, table, t)
-                and _takes(engine, front, table, t))
-    return _passes(engine, front, t) and _takes(engine, front, table, t)
+                and _on(engine, front.prev.region_right, table)
+                and _on(engine, front.region_right, table))
+    return _passes(engine, front) and _on(engine, front.region_right, table)
 
 
-def _joins(engine, front: Front, table, side: str, t: float) -> bool:
-    """Whether ``front``, next to a run on ``table`` at ``t`` (s), belongs to it."""
+def _joins(engine, front: Front, table, side: str) -> bool:
+    """Whether ``front``, next to a run on ``table``, belongs to it."""
     if front.kind == FrontKind.RAY:
         if math.isnan(front.invariant):
             return False
-        return _takes(engine, front.prev if side == "left" else front, table, t)
-    return _inside(engine, front, table, t)
+        far = front.prev.region_right if side == "left" else front.region_right
+        return _on(engine, far, table)
+    return _inside(engine, front, table)
 
 
 def _zone(engine, run: _Run, t: float) -> moc.Zone:
@@ -331,13 +295,12 @@ def _join(engine, front: Front, side: str, table, t: float) -> moc.Join | None:
     isentrope table (rays then pass the contact by the contact node)."""
     if front.kind not in (FrontKind.INTERFACE, FrontKind.CONTACT):
         return None
-    before = front.prev if side == "left" else front  # the far cell is right of it
-    far = before.region_right
+    far = front.prev.region_right if side == "left" else front.region_right
     outer = front.prev if side == "left" else front.next
     if far is None or outer is None:
         return None
     far_table = engine.table_of(far)
-    if far_table is None or _takes(engine, before, table, t):
+    if far_table is None or _on(engine, far, table):
         return None
     jp, jm = engine.invariants_of(far)
     return moc.Join(table=far_table, invariant=jp if side == "left" else jm,
