@@ -35,7 +35,7 @@ def converging(negligible: str | None = None, max_events: int = 200_000) -> ft.S
 
 
 def test_a_shock_train_converging_on_a_free_face_is_one_reflection():
-    solution = ft.run(converging(max_events=1_500))  # 857 events; pair by pair 6 927
+    solution = ft.run(converging(max_events=1_500))  # 853 events; pair by pair 6 927
     report = solution.accuracy_report
     assert report["gathered_fronts"] > 0
     balance = report["balance"]
