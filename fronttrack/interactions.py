@@ -109,9 +109,7 @@ def solve(engine, site, region_left, region_right, t, x, incoming, timer):
         except NoSolutionError:
             carried = None
         if carried is not None and not carried.separated:
-            engine.counters.suppressed_spalls += 1
-            engine.counters.suppressed_tension = max(engine.counters.suppressed_tension,
-                                                     -sol.bonded_sigma)
+            spall.carry(engine, -sol.bonded_sigma)
             sol = carried
     if sol.separated:
         if inside:
@@ -363,9 +361,7 @@ def fracture(engine, plan) -> None:
     if spall.outgrown(engine, plan, region.layer):
         return  # the zone's end moved on (a later lattice extended the zone)
     if plan.zone is not None and spall.beside_plane(engine, x, region.layer):
-        engine.counters.suppressed_spalls += 1
-        engine.counters.suppressed_tension = max(engine.counters.suppressed_tension,
-                                                 -region.state.sigma)
+        spall.carry(engine, -region.state.sigma)
         return
     x_left, x_right = before.position(t), after.position(t)
     region.left_points.append((x_left, t))

@@ -88,7 +88,7 @@ def schedule(engine, lattice, layer: int, t_now: float) -> None:
     else:
         zone = _extend(engine, earlier, found)
         points, x_tol = [], -math.inf  # no plane at the first point: any new end is one
-        engine.counters.suppressed_spalls += 1
+        carry(engine, strength)
     delay = spacing(engine) * found.slowness if earlier is not None else 0.0
     if zone.x_hi == found.x_hi and found.x_hi - found.x > x_tol:
         points.append((found.x_hi, found.t_hi + delay * zone.open_hi, zone.open_hi))
@@ -187,6 +187,13 @@ def outgrown(engine, plan: FracturePlan, layer: int) -> bool:
     point now lies inside a fracture zone of ``layer`` (``schedule``)."""
     return plan.open_end and any(z.x_lo < plan.x < z.x_hi for z in engine.fracture_zones
                                  if z.layer == layer)
+
+
+def carry(engine, tension: float) -> None:
+    """Count a fracture not made, its ``tension`` (Pa, positive) carried instead."""
+    counters = engine.counters
+    counters.suppressed_spalls += 1
+    counters.suppressed_tension = max(counters.suppressed_tension, tension)
 
 
 def beside_plane(engine, x: float, layer: int) -> bool:

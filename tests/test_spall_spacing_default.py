@@ -41,7 +41,7 @@ def test_no_fragment_below_the_resolution_length():
                   accuracy=Accuracy(max_events=1000))
     solution = run(scene)  # EventLimitError before the default spacing (2 558 events)
     report = solution.accuracy_report
-    # 546 (277 before neglect.ALONE kept the contacts whose cost alone exceeds a tenth
+    # 548 (277 before neglect.ALONE kept the contacts whose cost alone exceeds a tenth
     # of the promise: to 2 us 3 982 events within the promise, against 706 beyond it)
     assert solution.stats["events"] < 800
     assert [round(s.x * 1e3, 3) for s in solution.spalls] == [1.966, 2.942, 2.127]
